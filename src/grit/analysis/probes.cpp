@@ -1,0 +1,74 @@
+// Probes.
+#include "grit/analysis/probes.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "grit/parallel/parallel.hpp"
+
+namespace grit::analysis {
+
+namespace {
+
+template <int Dim>
+struct WeightedSum {
+    double weight = 0.0, value = 0.0;
+    WeightedSum& operator+=(const WeightedSum& o) {
+        weight += o.weight;
+        value += o.value;
+        return *this;
+    }
+};
+
+}  // namespace
+
+template <int Dim>
+double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<Dim>& ps,
+                      const sph::Kernel<Dim>& kernel, double spacing) {
+    using Vec = core::Vec<Dim>;
+    const Vec* x = ps.position();
+    const auto* phase = ps.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+
+    if (probe.kind == "front") {
+        const double lowest = -std::numeric_limits<double>::infinity();
+        const double m = parallel::max(ps.size(), lowest, [&](Index i) {
+            if (phase[i] != fluid) return lowest;
+            if (probe.has_region)
+                for (int k = 0; k < Dim; ++k)
+                    if (x[i][k] < probe.min[static_cast<std::size_t>(k)] || x[i][k] > probe.max[static_cast<std::size_t>(k)])
+                        return lowest;
+            return x[i][probe.axis];
+        });
+        return m == lowest ? std::numeric_limits<double>::quiet_NaN() : m + 0.5 * spacing;
+    }
+
+    Vec at{};
+    for (int k = 0; k < Dim; ++k) at[k] = probe.position[static_cast<std::size_t>(k)];
+    const double* rho = ps.density();
+    const double* p = ps.pressure();
+    const double* m = ps.mass();
+    const Vec* v = ps.velocity();
+    const auto s = std::visit(
+        [&](const auto& k) {
+            return parallel::sum(ps.size(), WeightedSum<Dim>{}, [&](Index i) {
+                WeightedSum<Dim> w;
+                if (phase[i] != fluid) return w;
+                const double r = core::norm(at - x[i]);
+                if (r >= k.support()) return w;
+                w.weight = k.value(r) * m[i] / rho[i];
+                const double q = probe.quantity == "pressure" ? p[i]
+                                 : probe.quantity == "density" ? rho[i]
+                                                               : core::norm(v[i]);
+                w.value = w.weight * q;
+                return w;
+            });
+        },
+        kernel);
+    return s.weight > 0.0 ? s.value / s.weight : 0.0;
+}
+
+template double evaluate_probe<2>(const io::ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double);
+template double evaluate_probe<3>(const io::ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double);
+
+}  // namespace grit::analysis

@@ -1,0 +1,83 @@
+// Jet inlet.
+#include "grit/boundary/jet_inlet.hpp"
+
+#include <cmath>
+
+namespace grit::boundary {
+
+template <int Dim>
+JetInlet<Dim>::JetInlet(const io::InletSpec& spec, double spacing, double density, double mass)
+    : spec_(spec), spacing_(spacing), density_(density), mass_(mass), travelled_(spacing) {
+    for (int k = 0; k < Dim; ++k) {
+        position_[k] = spec.position[static_cast<std::size_t>(k)];
+        direction_[k] = spec.direction[static_cast<std::size_t>(k)];
+    }
+    // Orthonormal directions spanning the inlet section.
+    Vec t1 = Vec::zero();
+    if constexpr (Dim == 2) {
+        t1[0] = -direction_[1];
+        t1[1] = direction_[0];
+    } else {
+        Vec helper = Vec::zero();
+        helper[std::abs(direction_[0]) < 0.9 ? 0 : 1] = 1.0;
+        t1 = helper - direction_ * core::dot(helper, direction_);
+        t1 *= 1.0 / core::norm(t1);
+    }
+    const double radius = 0.5 * spec.diameter;
+    const long n = std::lround(std::floor(spec.diameter / spacing + 1e-6));
+    for (long i = 0; i < n; ++i) {
+        const double s = (static_cast<double>(i) + 0.5) * spacing - 0.5 * static_cast<double>(n) * spacing;
+        if constexpr (Dim == 2) {
+            layer_.push_back(t1 * s);
+        } else {
+            Vec t2 = Vec::zero();
+            t2[0] = direction_[1] * t1[2] - direction_[2] * t1[1];
+            t2[1] = direction_[2] * t1[0] - direction_[0] * t1[2];
+            t2[2] = direction_[0] * t1[1] - direction_[1] * t1[0];
+            for (long j = 0; j < n; ++j) {
+                const double u = (static_cast<double>(j) + 0.5) * spacing - 0.5 * static_cast<double>(n) * spacing;
+                if (s * s + u * u <= radius * radius) layer_.push_back(t1 * s + t2 * u);
+            }
+        }
+    }
+}
+
+template <int Dim>
+double JetInlet<Dim>::emit(particles::SphParticles<Dim>& ps, double t, double dt) {
+    if (t + dt <= spec_.start || t >= spec_.stop) return 0.0;
+    const double active = std::min(t + dt, spec_.stop) - std::max(t, spec_.start);
+    travelled_ += spec_.velocity * active;
+    double emitted = 0.0;
+    while (travelled_ >= spacing_) {
+        travelled_ -= spacing_;
+        const auto count = static_cast<Index>(layer_.size());
+        const Index first = ps.append(count);
+        Vec* x = ps.position();
+        Vec* v = ps.velocity();
+        double* rho = ps.density();
+        Vec* v_half = ps.velocity_half();
+        double* rho_half = ps.density_half();
+        double* m = ps.mass();
+        std::int32_t* phase = ps.phase();
+        std::int32_t* mat = ps.material();
+        for (Index k = 0; k < count; ++k) {
+            const Index i = first + k;
+            // The layer left the inlet section `travelled_` ago.
+            x[i] = position_ + layer_[static_cast<std::size_t>(k)] + direction_ * travelled_;
+            v[i] = direction_ * spec_.velocity;
+            rho[i] = density_;
+            v_half[i] = v[i];
+            rho_half[i] = density_;
+            m[i] = mass_;
+            phase[i] = static_cast<std::int32_t>(Phase::fluid);
+            mat[i] = spec_.material;
+        }
+        emitted += mass_ * count;
+    }
+    return emitted;
+}
+
+template class JetInlet<2>;
+template class JetInlet<3>;
+
+}  // namespace grit::boundary

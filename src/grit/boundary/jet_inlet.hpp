@@ -1,0 +1,38 @@
+// A jet inlet: emits layers of fluid particles through a segment (2D) or disc (3D) at a set velocity,
+// one layer each time the previous one has travelled one particle spacing.
+#pragma once
+
+#include <vector>
+
+#include "grit/core/vec.hpp"
+#include "grit/io/case_spec.hpp"
+#include "grit/particles/sph_particles.hpp"
+
+namespace grit::boundary {
+
+template <int Dim>
+class JetInlet {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// `density` and `mass` are those of each emitted particle.
+    JetInlet(const io::InletSpec& spec, double spacing, double density, double mass);
+
+    /// Emits the layers due during (t, t + dt]; returns the mass emitted [kg] (per metre in 2D).
+    double emit(particles::SphParticles<Dim>& particles, double t, double dt);
+
+    /// Offsets of one layer's particles within the inlet section (perpendicular to the jet).
+    const std::vector<Vec>& layer() const { return layer_; }
+
+private:
+    io::InletSpec spec_;
+    Vec position_, direction_;
+    double spacing_, density_, mass_;
+    std::vector<Vec> layer_;
+    double travelled_;  ///< distance the last emitted layer has moved [m]
+};
+
+extern template class JetInlet<2>;
+extern template class JetInlet<3>;
+
+}  // namespace grit::boundary

@@ -1,0 +1,71 @@
+// Small fixed-size vector used for positions, velocities and forces in 2D and 3D.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+namespace grit::core {
+
+/// A Dim-component vector of doubles; a plain aggregate so arrays of it are flat and GPU-friendly.
+template <int Dim>
+struct Vec {
+    static_assert(Dim == 2 || Dim == 3, "grit supports 2D and 3D");
+    double c[Dim];
+
+    static constexpr Vec zero() noexcept {
+        Vec v{};
+        for (int k = 0; k < Dim; ++k) v.c[k] = 0.0;
+        return v;
+    }
+    static constexpr Vec filled(double s) noexcept {
+        Vec v{};
+        for (int k = 0; k < Dim; ++k) v.c[k] = s;
+        return v;
+    }
+    constexpr double& operator[](int k) noexcept { return c[k]; }
+    constexpr const double& operator[](int k) const noexcept { return c[k]; }
+
+    constexpr Vec& operator+=(const Vec& o) noexcept {
+        for (int k = 0; k < Dim; ++k) c[k] += o.c[k];
+        return *this;
+    }
+    constexpr Vec& operator-=(const Vec& o) noexcept {
+        for (int k = 0; k < Dim; ++k) c[k] -= o.c[k];
+        return *this;
+    }
+    constexpr Vec& operator*=(double s) noexcept {
+        for (int k = 0; k < Dim; ++k) c[k] *= s;
+        return *this;
+    }
+};
+
+template <int Dim>
+constexpr Vec<Dim> operator+(Vec<Dim> a, const Vec<Dim>& b) noexcept { return a += b; }
+template <int Dim>
+constexpr Vec<Dim> operator-(Vec<Dim> a, const Vec<Dim>& b) noexcept { return a -= b; }
+template <int Dim>
+constexpr Vec<Dim> operator-(Vec<Dim> a) noexcept { return a *= -1.0; }
+template <int Dim>
+constexpr Vec<Dim> operator*(Vec<Dim> a, double s) noexcept { return a *= s; }
+template <int Dim>
+constexpr Vec<Dim> operator*(double s, Vec<Dim> a) noexcept { return a *= s; }
+
+template <int Dim>
+constexpr double dot(const Vec<Dim>& a, const Vec<Dim>& b) noexcept {
+    double s = 0.0;
+    for (int k = 0; k < Dim; ++k) s += a.c[k] * b.c[k];
+    return s;
+}
+template <int Dim>
+constexpr double norm2(const Vec<Dim>& a) noexcept { return dot(a, a); }
+template <int Dim>
+inline double norm(const Vec<Dim>& a) noexcept { return std::sqrt(norm2(a)); }
+
+template <int Dim>
+constexpr bool all_finite(const Vec<Dim>& a) noexcept {
+    for (int k = 0; k < Dim; ++k)
+        if (!std::isfinite(a.c[k])) return false;
+    return true;
+}
+
+}  // namespace grit::core

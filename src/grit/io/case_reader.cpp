@@ -1,0 +1,508 @@
+// The case reader: every key is read through a Section that remembers it, so that any key left unread
+// at the end is reported as unknown (a typo must never be silently ignored).
+#include "grit/io/case_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "grit/core/error.hpp"
+#include "grit/material/library.hpp"
+#include "grit/sph/kernels.hpp"
+
+namespace grit::io {
+
+namespace {
+
+using core::InputError;
+
+std::string repr(const toml::node& node) {
+    std::ostringstream os;
+    node.visit([&](const auto& v) {
+        if constexpr (toml::is_string<decltype(v)>)
+            os << '"' << v.get() << '"';
+        else
+            os << v;
+    });
+    return os.str();
+}
+
+/// A check on a number; returns an empty string when the value is fine, else the reason.
+using NumberCheck = std::function<std::string(double)>;
+
+NumberCheck positive(const char* unit) {
+    return [unit](double v) { return v > 0.0 ? std::string{} : fmt::format("must be positive {}", unit); };
+}
+NumberCheck non_negative(const char* unit) {
+    return [unit](double v) { return v >= 0.0 ? std::string{} : fmt::format("must not be negative {}", unit); };
+}
+NumberCheck in_range(double lo, double hi) {
+    return [lo, hi](double v) {
+        return v >= lo && v <= hi ? std::string{} : fmt::format("must lie in [{}, {}]", lo, hi);
+    };
+}
+
+class Section {
+public:
+    Section(std::set<std::string>* used, const toml::table* table, std::string path)
+        : used_(used), table_(table), path_(std::move(path)) {}
+
+    const std::string& path() const { return path_; }
+    std::string key_path(std::string_view key) const {
+        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+    }
+    bool has(std::string_view key) const { return table_ && table_->contains(key); }
+
+    [[noreturn]] void fail(std::string_view key, std::string_view reason) const {
+        const toml::node* n = node(key);
+        if (n)
+            throw InputError(fmt::format("key '{}' = {}: {}", key_path(key), repr(*n), reason));
+        throw InputError(fmt::format("key '{}': {}", key_path(key), reason));
+    }
+
+    std::optional<double> maybe_number(std::string_view key, const NumberCheck& check = {}) const {
+        const toml::node* n = take(key);
+        if (!n) return std::nullopt;
+        if (!n->is_number()) fail(key, "must be a number");
+        const double v = n->value<double>().value();
+        if (!std::isfinite(v)) fail(key, "must be finite");
+        if (check)
+            if (auto why = check(v); !why.empty()) fail(key, why);
+        return v;
+    }
+    double number(std::string_view key, const NumberCheck& check = {}) const {
+        if (!has(key)) fail(key, "is required");
+        return *maybe_number(key, check);
+    }
+    double number_or(std::string_view key, double fallback, const NumberCheck& check = {}) const {
+        return maybe_number(key, check).value_or(fallback);
+    }
+    int integer_or(std::string_view key, int fallback, int lo, int hi) const {
+        const toml::node* n = take(key);
+        if (!n) return fallback;
+        if (!n->is_integer()) fail(key, "must be an integer");
+        const auto v = n->value<std::int64_t>().value();
+        if (v < lo || v > hi) fail(key, fmt::format("must lie in [{}, {}]", lo, hi));
+        return static_cast<int>(v);
+    }
+    std::optional<std::string> maybe_text(std::string_view key) const {
+        const toml::node* n = take(key);
+        if (!n) return std::nullopt;
+        if (!n->is_string()) fail(key, "must be a string");
+        return n->value<std::string>().value();
+    }
+    std::string text(std::string_view key) const {
+        if (!has(key)) fail(key, "is required");
+        return *maybe_text(key);
+    }
+    std::string text_or(std::string_view key, std::string fallback) const {
+        return maybe_text(key).value_or(std::move(fallback));
+    }
+    std::string choice(std::string_view key, std::string fallback, const std::vector<std::string>& allowed) const {
+        std::string v = text_or(key, fallback);
+        if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
+            std::string list;
+            for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+            fail(key, "must be one of " + list);
+        }
+        return v;
+    }
+    bool flag_or(std::string_view key, bool fallback) const {
+        const toml::node* n = take(key);
+        if (!n) return fallback;
+        if (!n->is_boolean()) fail(key, "must be true or false");
+        return n->value<bool>().value();
+    }
+    std::vector<double> vector(std::string_view key, int size, const char* unit) const {
+        const toml::node* n = take(key);
+        if (!n) fail(key, fmt::format("is required ({} numbers {})", size, unit));
+        const toml::array* a = n->as_array();
+        if (!a || static_cast<int>(a->size()) != size)
+            fail(key, fmt::format("must be an array of {} numbers {} (the case is {}D)", size, unit, size));
+        std::vector<double> out;
+        for (const auto& e : *a) {
+            if (!e.is_number()) fail(key, fmt::format("must be an array of {} numbers {}", size, unit));
+            const double v = e.value<double>().value();
+            if (!std::isfinite(v)) fail(key, "must hold finite numbers");
+            out.push_back(v);
+        }
+        return out;
+    }
+    std::vector<double> vector_or(std::string_view key, int size, const char* unit, std::vector<double> fallback) const {
+        return has(key) ? vector(key, size, unit) : fallback;
+    }
+    std::vector<std::string> strings_or(std::string_view key, std::vector<std::string> fallback) const {
+        const toml::node* n = take(key);
+        if (!n) return fallback;
+        const toml::array* a = n->as_array();
+        if (!a) fail(key, "must be an array of strings");
+        std::vector<std::string> out;
+        for (const auto& e : *a) {
+            if (!e.is_string()) fail(key, "must be an array of strings");
+            out.push_back(e.value<std::string>().value());
+        }
+        return out;
+    }
+    Section section(std::string_view key) const {
+        const toml::node* n = take(key);
+        if (!n) return Section(used_, nullptr, key_path(key));
+        if (!n->is_table()) fail(key, "must be a table");
+        return Section(used_, n->as_table(), key_path(key));
+    }
+    std::vector<Section> sections(std::string_view key) const {
+        std::vector<Section> out;
+        const toml::node* n = take(key);
+        if (!n) return out;
+        const toml::array* a = n->as_array();
+        if (!a) fail(key, fmt::format("must be an array of tables ([[{}]])", key));
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const toml::table* t = (*a)[i].as_table();
+            if (!t) fail(key, fmt::format("must be an array of tables ([[{}]])", key));
+            out.emplace_back(used_, t, fmt::format("{}[{}]", key_path(key), i));
+        }
+        return out;
+    }
+    std::vector<std::string> keys() const {
+        std::vector<std::string> out;
+        if (table_)
+            for (const auto& [k, v] : *table_) out.emplace_back(k.str());
+        return out;
+    }
+
+private:
+    const toml::node* node(std::string_view key) const { return table_ ? table_->get(key) : nullptr; }
+    const toml::node* take(std::string_view key) const {
+        const toml::node* n = node(key);
+        if (n) used_->insert(key_path(key));
+        return n;
+    }
+
+    std::set<std::string>* used_;
+    const toml::table* table_;
+    std::string path_;
+};
+
+void report_unknown(const toml::table& table, const std::string& prefix, const std::set<std::string>& used) {
+    for (const auto& [k, v] : table) {
+        const std::string path = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+        if (!used.count(path))
+            throw InputError(fmt::format("key '{}': unknown key (misspelt, or not valid here)", path));
+        if (const toml::table* t = v.as_table()) report_unknown(*t, path, used);
+        if (const toml::array* a = v.as_array())
+            for (std::size_t i = 0; i < a->size(); ++i)
+                if (const toml::table* t = (*a)[i].as_table()) report_unknown(*t, fmt::format("{}[{}]", path, i), used);
+    }
+}
+
+/// Applies one "a.b[1].c=value" override to the parsed table.
+void apply_override(toml::table& root, const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError(fmt::format("--set '{}': expected key.path=value", assignment));
+    std::string path = assignment.substr(0, eq);
+    std::string text = assignment.substr(eq + 1);
+    auto trim = [](std::string& s) {
+        s.erase(0, s.find_first_not_of(" \t"));
+        s.erase(s.find_last_not_of(" \t") + 1);
+    };
+    trim(path);
+    trim(text);
+
+    toml::table value_holder;
+    try {
+        value_holder = toml::parse("v = " + text);
+    } catch (const toml::parse_error&) {
+        value_holder = toml::table{{"v", text}};  // a bare word is a string
+    }
+
+    std::vector<std::string> parts;
+    std::stringstream ss(path);
+    for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+
+    toml::table* t = &root;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::string name = parts[k];
+        std::optional<std::size_t> index;
+        if (auto br = name.find('['); br != std::string::npos && name.back() == ']') {
+            try {
+                index = std::stoul(name.substr(br + 1, name.size() - br - 2));
+            } catch (const std::exception&) {
+                throw InputError(fmt::format("--set '{}': bad index in '{}'", assignment, name));
+            }
+            name = name.substr(0, br);
+        }
+        if (name.empty()) throw InputError(fmt::format("--set '{}': empty key in the path", assignment));
+        const bool last = k + 1 == parts.size();
+        if (index) {
+            toml::array* a = t->get_as<toml::array>(name);
+            if (!a || *index >= a->size() || !(*a)[*index].is_table())
+                throw InputError(fmt::format("--set '{}': there is no table {}[{}] in the case", assignment, name, *index));
+            if (last) throw InputError(fmt::format("--set '{}': cannot replace a whole table", assignment));
+            t = (*a)[*index].as_table();
+            continue;
+        }
+        if (last) {
+            t->insert_or_assign(name, *value_holder.get("v"));
+        } else {
+            if (!t->contains(name)) t->insert(name, toml::table{});
+            t = t->get_as<toml::table>(name);
+            if (!t) throw InputError(fmt::format("--set '{}': '{}' is not a table", assignment, name));
+        }
+    }
+}
+
+material::Material read_material(const Section& s, const std::string& name) {
+    material::Material m;
+    if (auto base = s.maybe_text("base")) {
+        auto found = material::find_in_library(*base);
+        if (!found) s.fail("base", "unknown library material (see `grit materials`)");
+        m = *found;
+    } else if (auto found = material::find_in_library(name)) {
+        m = *found;  // a table named after a library material overrides its values
+    } else {
+        if (!s.has("eos")) s.fail("eos", "is required for a material that has no 'base'");
+        m.description = "defined in the case file";
+    }
+    m.name = name;
+    if (auto d = s.maybe_text("description")) m.description = *d;
+
+    const std::string current = std::visit([](const auto& e) { return std::string(e.name); }, m.eos);
+    const std::string eos = s.choice("eos", current, {"tait", "mie_gruneisen"});
+    const double rho0 = s.number_or("reference_density", material::reference_density(m.eos), positive("[kg/m^3]"));
+    const double c0 = s.number_or("sound_speed", material::reference_sound_speed(m.eos), positive("[m/s]"));
+    if (eos == "tait") {
+        material::TaitEos t{rho0, c0, 7.0};
+        if (auto* old = std::get_if<material::TaitEos>(&m.eos)) t.gamma = old->gamma;
+        t.gamma = s.number_or("gamma", t.gamma, positive("[-]"));
+        m.eos = t;
+    } else {
+        material::MieGruneisenEos g{rho0, c0, 0.5, 0.0, 1.0, 0.0, 0.0};
+        if (auto* old = std::get_if<material::MieGruneisenEos>(&m.eos)) {
+            g = *old;
+            g.reference_density = rho0;
+            g.sound_speed = c0;
+        }
+        g.gruneisen_gamma = s.number_or("gruneisen_gamma", g.gruneisen_gamma, non_negative("[-]"));
+        g.volume_correction = s.number_or("volume_correction", g.volume_correction);
+        g.s1 = s.number_or("s1", g.s1);
+        g.s2 = s.number_or("s2", g.s2);
+        g.s3 = s.number_or("s3", g.s3);
+        m.eos = g;
+    }
+    m.dynamic_viscosity = s.number_or("dynamic_viscosity", m.dynamic_viscosity, non_negative("[Pa s]"));
+    m.artificial_viscosity_alpha =
+        s.number_or("artificial_viscosity_alpha", m.artificial_viscosity_alpha, non_negative("[-]"));
+    m.artificial_viscosity_beta = s.number_or("artificial_viscosity_beta", m.artificial_viscosity_beta, non_negative("[-]"));
+    m.min_pressure = s.number_or("min_pressure", m.min_pressure);
+    return m;
+}
+
+class MaterialTable {
+public:
+    MaterialTable(const Section& defined, std::vector<material::Material>& used) : defined_(defined), used_(used) {}
+
+    /// Index of the material named by key `key` of section `s`.
+    int resolve(const Section& s, std::string_view key, const std::string& name) {
+        for (std::size_t k = 0; k < used_.size(); ++k)
+            if (used_[k].name == name) return static_cast<int>(k);
+        if (defined_.has(name)) {
+            used_.push_back(read_material(defined_.section(name), name));
+        } else if (auto m = material::find_in_library(name)) {
+            used_.push_back(*m);
+        } else {
+            std::string known;
+            for (const auto& m2 : material::library()) known += (known.empty() ? "" : ", ") + m2.name;
+            for (const auto& k : defined_.keys()) known += ", " + k;
+            s.fail(key, "unknown material (known: " + known + ")");
+        }
+        if (used_.back().phase != Phase::fluid)
+            s.fail(key, "is not a fluid material; only fluids are supported so far");
+        return static_cast<int>(used_.size()) - 1;
+    }
+
+private:
+    const Section& defined_;
+    std::vector<material::Material>& used_;
+};
+
+ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
+    ShapeSpec shape;
+    std::vector<std::string> kinds = {"box", "disc", "sphere"};
+    if (allow_tank) kinds.push_back("tank");
+    shape.kind = s.choice("shape", "box", kinds);
+    if (shape.kind == "sphere") shape.kind = "disc";
+    const char* axis = "xyz";
+    if (shape.kind == "box" || shape.kind == "tank") {
+        shape.min = s.vector("min", dim, "[m]");
+        shape.max = s.vector("max", dim, "[m]");
+        for (int k = 0; k < dim; ++k) {
+            if (shape.max[k] <= shape.min[k])
+                s.fail("max", fmt::format("must exceed min in {} ({} <= {})", axis[k], shape.max[k], shape.min[k]));
+            if (shape.kind == "box" && shape.max[k] - shape.min[k] < dx)
+                s.fail("max", fmt::format("the box is {} m wide in {}, less than numerics.particle_spacing = {} m",
+                                          shape.max[k] - shape.min[k], axis[k], dx));
+        }
+        if (shape.kind == "tank") {
+            shape.layers = s.integer_or("layers", 3, 1, 20);
+            shape.open = s.strings_or("open", {dim == 2 ? "top" : "top"});
+            std::vector<std::string> sides = {"left", "right", "bottom", "top"};
+            if (dim == 3) sides = {"left", "right", "front", "back", "bottom", "top"};
+            for (const auto& o : shape.open)
+                if (std::find(sides.begin(), sides.end(), o) == sides.end())
+                    s.fail("open", fmt::format("unknown side \"{}\"", o));
+        }
+    } else {
+        shape.center = s.vector("center", dim, "[m]");
+        shape.radius = s.number("radius", positive("[m]"));
+        if (2.0 * shape.radius < dx)
+            s.fail("radius", fmt::format("the disc is smaller than numerics.particle_spacing = {} m", dx));
+    }
+    return shape;
+}
+
+}  // namespace
+
+CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
+    toml::table root;
+    try {
+        root = toml::parse_file(file.string());
+    } catch (const toml::parse_error& e) {
+        throw InputError(fmt::format("case file '{}' line {}: malformed TOML: {}", file.string(),
+                                     e.source().begin.line, e.description()));
+    }
+    for (const auto& o : overrides) apply_override(root, o);
+
+    std::set<std::string> used;
+    const Section top(&used, &root, "");
+    CaseSpec c;
+    c.source = file;
+    c.name = file.stem().string() == "case" ? file.parent_path().filename().string() : file.stem().string();
+    if (c.name.empty()) c.name = "case";
+
+    const Section sim = top.section("simulation");
+    c.title = sim.text_or("title", c.name);
+    c.dimension = sim.integer_or("dimension", 2, 2, 3);
+    const int dim = c.dimension;
+
+    const Section time = top.section("time");
+    c.end_time = time.number("end", non_negative("[s]"));
+    c.cfl = time.number_or("cfl", c.cfl, in_range(1e-3, 1.0));
+    c.max_time_step = time.number_or("max_step", c.max_time_step, positive("[s]"));
+
+    const Section output = top.section("output");
+    c.output_interval = output.number("interval", positive("[s]"));
+    c.write_snapshots = output.flag_or("snapshots", true);
+
+    const Section numerics = top.section("numerics");
+    c.particle_spacing = numerics.number("particle_spacing", positive("[m]"));
+    c.smoothing_ratio = numerics.number_or("smoothing_ratio", c.smoothing_ratio, in_range(0.5, 3.0));
+    std::vector<std::string> kernels(std::begin(sph::kernel_names), std::end(sph::kernel_names));
+    c.kernel = numerics.choice("kernel", c.kernel, kernels);
+    c.density_diffusion = numerics.number_or("density_diffusion", c.density_diffusion, in_range(0.0, 1.0));
+    c.neighbor_skin = numerics.number_or("neighbor_skin", c.neighbor_skin, in_range(0.0, 2.0));
+    c.check_interval = numerics.integer_or("check_interval", c.check_interval, 1, 1000000);
+    c.max_speed = numerics.number_or("max_speed", 0.0, non_negative("[m/s]"));
+    const double dx = c.particle_spacing;
+
+    const Section physics = top.section("physics");
+    c.gravity = physics.vector_or("gravity", dim, "[m/s^2]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+
+    const Section materials = top.section("materials");
+    MaterialTable table(materials, c.materials);
+
+    for (const Section& f : top.sections("fluid")) {
+        BlockSpec b;
+        b.key = f.path();
+        b.shape = read_shape(f, dim, dx, false);
+        b.material = table.resolve(f, "material", f.text_or("material", "water"));
+        b.velocity = f.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+        b.hydrostatic = f.flag_or("hydrostatic", false);
+        c.fluids.push_back(std::move(b));
+    }
+    for (const Section& s : top.sections("inlet")) {
+        InletSpec in;
+        in.key = s.path();
+        in.position = s.vector("position", dim, "[m]");
+        in.direction = s.vector("direction", dim, "[-]");
+        double n2 = 0.0;
+        for (double v : in.direction) n2 += v * v;
+        if (n2 <= 0.0) s.fail("direction", "must not be the zero vector");
+        for (double& v : in.direction) v /= std::sqrt(n2);
+        in.diameter = s.number("diameter", positive("[m]"));
+        if (in.diameter < dx) s.fail("diameter", fmt::format("is less than numerics.particle_spacing = {} m", dx));
+        in.velocity = s.number("velocity", positive("[m/s]"));
+        in.material = table.resolve(s, "material", s.text_or("material", "water"));
+        in.start = s.number_or("start", 0.0, non_negative("[s]"));
+        in.stop = s.number_or("stop", 1e300, non_negative("[s]"));
+        c.inlets.push_back(std::move(in));
+    }
+    if (c.fluids.empty() && c.inlets.empty())
+        throw InputError("the case has no fluid: add a [[fluid]] block or an [[inlet]]");
+    const int default_material = c.fluids.empty() ? c.inlets.front().material : c.fluids.front().material;
+    for (const Section& w : top.sections("wall")) {
+        BlockSpec b;
+        b.key = w.path();
+        b.shape = read_shape(w, dim, dx, true);
+        b.material = w.has("material") ? table.resolve(w, "material", w.text("material")) : default_material;
+        c.walls.push_back(std::move(b));
+    }
+    for (const Section& s : top.sections("outlet")) {
+        OutletSpec o;
+        o.key = s.path();
+        o.min = s.vector("min", dim, "[m]");
+        o.max = s.vector("max", dim, "[m]");
+        for (int k = 0; k < dim; ++k)
+            if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
+        c.outlets.push_back(std::move(o));
+    }
+    std::set<std::string> probe_names;
+    for (const Section& s : top.sections("probe")) {
+        ProbeSpec p;
+        p.key = s.path();
+        p.name = s.text("name");
+        if (p.name.empty() || p.name.find_first_of(", \t\"") != std::string::npos)
+            s.fail("name", "must be a non-empty column name without commas, spaces or quotes");
+        if (!probe_names.insert(p.name).second) s.fail("name", "is used by another probe");
+        p.kind = s.choice("kind", "point", {"point", "front"});
+        if (p.kind == "point") {
+            p.quantity = s.choice("quantity", "pressure", {"pressure", "density", "velocity"});
+            p.position = s.vector("position", dim, "[m]");
+        } else {
+            const std::string axis = s.choice("axis", "x", dim == 2 ? std::vector<std::string>{"x", "y"}
+                                                                    : std::vector<std::string>{"x", "y", "z"});
+            p.axis = axis[0] - 'x';
+            if (s.has("min") || s.has("max")) {
+                p.has_region = true;
+                p.min = s.vector("min", dim, "[m]");
+                p.max = s.vector("max", dim, "[m]");
+            }
+        }
+        c.probes.push_back(std::move(p));
+    }
+
+    const Section domain = top.section("domain");
+    c.domain_min = domain.vector("min", dim, "[m]");
+    c.domain_max = domain.vector("max", dim, "[m]");
+    for (int k = 0; k < dim; ++k)
+        if (c.domain_max[k] <= c.domain_min[k]) domain.fail("max", "must exceed domain.min in every direction");
+    c.remove_leaving = domain.choice("on_exit", "error", {"error", "remove"}) == "remove";
+
+    // Materials are read on first use; a defined but unused material is still checked and reported.
+    for (const auto& name : materials.keys()) {
+        bool in_use = false;
+        for (const auto& m : c.materials) in_use |= m.name == name;
+        if (!in_use) read_material(materials.section(name), name);
+    }
+
+    report_unknown(root, "", used);
+    return c;
+}
+
+}  // namespace grit::io

@@ -1,0 +1,16 @@
+// Reads and validates a TOML case file (with --set overrides) into a CaseSpec.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grit/io/case_spec.hpp"
+
+namespace grit::io {
+
+/// Reads `file`, applies `overrides` ("key.path=value", the value in TOML syntax or a bare string)
+/// and validates everything. Throws core::InputError naming the key, the value and the reason.
+CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
+
+}  // namespace grit::io

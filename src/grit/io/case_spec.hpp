@@ -1,0 +1,94 @@
+// A case as read from its TOML file: plain data, validated, in SI units. sim/ builds a run from it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grit/material/material.hpp"
+
+namespace grit::io {
+
+/// A geometry primitive. Vectors have `dimension` components.
+struct ShapeSpec {
+    std::string kind;  ///< "box", "disc" (a sphere in 3D) or "tank" (walls around an inner box)
+    std::vector<double> min, max;   ///< box, tank: corners [m]
+    std::vector<double> center;     ///< disc: centre [m]
+    double radius = 0.0;            ///< disc: radius [m]
+    int layers = 0;                 ///< tank: wall thickness in particle layers
+    std::vector<std::string> open;  ///< tank: sides left without wall ("top", "bottom", "left", ...)
+};
+
+/// A block of particles: fluid or wall.
+struct BlockSpec {
+    std::string key;  ///< where it was defined, for messages: "fluid[0]"
+    ShapeSpec shape;
+    int material = 0;  ///< index into CaseSpec::materials
+    std::vector<double> velocity;
+    bool hydrostatic = false;  ///< fluid: start with the hydrostatic pressure of its own column
+};
+
+/// A jet inlet: emits layers of particles through a segment (2D) or disc (3D).
+struct InletSpec {
+    std::string key;
+    std::vector<double> position;   ///< centre of the inlet section [m]
+    std::vector<double> direction;  ///< jet direction (normalised when read)
+    double diameter = 0.0;          ///< [m]
+    double velocity = 0.0;          ///< [m/s]
+    int material = 0;
+    double start = 0.0, stop = 1e300;  ///< emission window [s]
+};
+
+/// An outlet: a box that removes the fluid particles entering it and books their mass.
+struct OutletSpec {
+    std::string key;
+    std::vector<double> min, max;
+};
+
+/// A probe written as a column of series.csv.
+struct ProbeSpec {
+    std::string key;
+    std::string name;      ///< column name
+    std::string kind;      ///< "point": Shepard interpolation; "front": furthest fluid along an axis
+    std::string quantity;  ///< point: "pressure", "density", "velocity"
+    std::vector<double> position;  ///< point [m]
+    int axis = 0;                  ///< front: 0 = x, 1 = y, 2 = z
+    bool has_region = false;       ///< front: only particles inside [min, max]
+    std::vector<double> min, max;
+};
+
+struct CaseSpec {
+    std::filesystem::path source;  ///< the case file
+    std::string name;              ///< output base name
+    std::string title;
+    int dimension = 2;
+
+    double end_time = 0.0;         ///< time.end [s]
+    double cfl = 0.2;              ///< time.cfl, C_F of eq. (51)
+    double max_time_step = 1e300;  ///< time.max_step [s]
+
+    double output_interval = 0.0;  ///< output.interval [s]
+    bool write_snapshots = true;   ///< output.snapshots
+
+    double particle_spacing = 0.0;       ///< numerics.particle_spacing [m]
+    double smoothing_ratio = 1.25;       ///< numerics.smoothing_ratio h/dx (paper: 1.25)
+    std::string kernel = "cubic_spline"; ///< numerics.kernel
+    double density_diffusion = 0.1;      ///< numerics.density_diffusion (delta; 0 = off)
+    double neighbor_skin = 0.2;          ///< numerics.neighbor_skin, in units of h
+    int check_interval = 50;             ///< numerics.check_interval [steps]
+    double max_speed = 0.0;              ///< numerics.max_speed [m/s]: faster is a blow-up (0 = auto)
+
+    std::vector<double> gravity;  ///< physics.gravity [m/s^2]
+
+    std::vector<double> domain_min, domain_max;  ///< domain.min, domain.max [m]
+    bool remove_leaving = false;                 ///< domain.on_exit = "remove" (else "error")
+
+    std::vector<material::Material> materials;  ///< the materials the case uses
+    std::vector<BlockSpec> fluids;
+    std::vector<BlockSpec> walls;
+    std::vector<InletSpec> inlets;
+    std::vector<OutletSpec> outlets;
+    std::vector<ProbeSpec> probes;
+};
+
+}  // namespace grit::io

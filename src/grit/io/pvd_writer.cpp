@@ -1,0 +1,72 @@
+// ParaView .pvd collection writer: rewrites the whole file atomically after each dataset.
+#include "grit/io/pvd_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <ostream>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include "grit/io/vtu_writer.hpp"
+
+namespace grit::io {
+
+namespace {
+
+/// Escapes the five XML special characters for use inside a double-quoted attribute.
+std::string xml_escape(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    for (const char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+PvdWriter::PvdWriter(std::filesystem::path file) : file_(std::move(file)) {}
+
+void PvdWriter::add(double time, const std::string& relative_path) {
+    if (!std::isfinite(time)) {
+        throw std::invalid_argument(
+            fmt::format("PvdWriter: non-finite time {} for '{}'", time, relative_path));
+    }
+    if (relative_path.empty()) {
+        throw std::invalid_argument("PvdWriter: empty dataset path");
+    }
+    entries_.push_back({time, relative_path});
+    try {
+        rewrite();
+    } catch (...) {
+        entries_.pop_back();
+        throw;
+    }
+}
+
+void PvdWriter::rewrite() const {
+    std::string text;
+    text += "<?xml version=\"1.0\"?>\n";
+    text += "<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n";
+    text += "  <Collection>\n";
+    for (const Entry& e : entries_) {
+        text += fmt::format("    <DataSet timestep=\"{:.17g}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                            e.time, xml_escape(e.relative_path));
+    }
+    text += "  </Collection>\n";
+    text += "</VTKFile>\n";
+    write_file_atomically(file_, [&text](std::ostream& out) {
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    });
+}
+
+}  // namespace grit::io

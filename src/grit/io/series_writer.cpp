@@ -1,0 +1,77 @@
+// CSV time-series writer: header line, then rows of {:.10g} values flushed one by one.
+#include "grit/io/series_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <iterator>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+namespace grit::io {
+
+namespace {
+
+/// Quotes a CSV field (RFC 4180) when it contains a comma, a quote or a line break.
+std::string csv_field(std::string_view s) {
+    if (s.find_first_of(",\"\r\n") == std::string_view::npos) {
+        return std::string(s);
+    }
+    std::string out = "\"";
+    for (const char c : s) {
+        if (c == '"') {
+            out += '"';
+        }
+        out += c;
+    }
+    out += '"';
+    return out;
+}
+
+}  // namespace
+
+SeriesWriter::SeriesWriter(std::filesystem::path file, std::vector<std::string> columns)
+    : file_(std::move(file)), columns_(std::move(columns)) {
+    if (columns_.empty()) {
+        throw std::invalid_argument(
+            fmt::format("SeriesWriter: no columns given for '{}'", file_.string()));
+    }
+    out_.open(file_, std::ios::out | std::ios::trunc);
+    if (!out_) {
+        throw std::runtime_error(fmt::format("cannot open '{}' for writing", file_.string()));
+    }
+    std::string line;
+    for (std::size_t i = 0; i < columns_.size(); ++i) {
+        if (i > 0) {
+            line += ',';
+        }
+        line += csv_field(columns_[i]);
+    }
+    line += '\n';
+    out_ << line << std::flush;
+    if (!out_) {
+        throw std::runtime_error(fmt::format("error writing '{}'", file_.string()));
+    }
+}
+
+void SeriesWriter::write_row(const std::vector<double>& values) {
+    if (values.size() != columns_.size()) {
+        throw std::logic_error(fmt::format("SeriesWriter '{}': row has {} values, expected {}",
+                                           file_.string(), values.size(), columns_.size()));
+    }
+    fmt::memory_buffer line;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (i > 0) {
+            line.push_back(',');
+        }
+        fmt::format_to(std::back_inserter(line), "{:.10g}", values[i]);
+    }
+    line.push_back('\n');
+    out_.write(line.data(), static_cast<std::streamsize>(line.size()));
+    out_.flush();
+    if (!out_) {
+        throw std::runtime_error(fmt::format("error writing '{}'", file_.string()));
+    }
+}
+
+}  // namespace grit::io

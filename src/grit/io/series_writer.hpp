@@ -1,0 +1,36 @@
+// Writes a time series (one row of numbers per step) as a CSV file with a header line.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace grit::io {
+
+/// A CSV time series: a header line of column names, then one row per write_row(), each value
+/// printed with `{:.10g}` and the file flushed after every row so it can be followed live.
+/// Column names containing a comma, quote or line break are quoted as in RFC 4180.
+class SeriesWriter {
+public:
+    /// Creates (truncates) `file` and writes the header line. Throws std::invalid_argument
+    /// for an empty column list and std::runtime_error naming the path on I/O failure.
+    SeriesWriter(std::filesystem::path file, std::vector<std::string> columns);
+
+    /// Appends one row and flushes. Throws std::logic_error if `values.size()` differs from
+    /// the number of columns, std::runtime_error naming the path on I/O failure.
+    void write_row(const std::vector<double>& values);
+
+    /// The column names, in order.
+    const std::vector<std::string>& columns() const { return columns_; }
+
+    /// The CSV file.
+    const std::filesystem::path& file() const { return file_; }
+
+private:
+    std::filesystem::path file_;
+    std::vector<std::string> columns_;
+    std::ofstream out_;
+};
+
+}  // namespace grit::io

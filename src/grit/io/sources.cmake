@@ -1,0 +1,6 @@
+# grit::io sources, relative to src/grit (included from src/grit/CMakeLists.txt).
+set(GRIT_IO_SOURCES
+  io/vtu_writer.cpp
+  io/pvd_writer.cpp
+  io/series_writer.cpp
+)

@@ -1,0 +1,239 @@
+// VTK XML UnstructuredGrid writer (raw binary appended data) and the atomic-file helper.
+#include "grit/io/vtu_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cstdint>
+#include <fstream>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <unistd.h>
+
+namespace grit::io {
+
+static_assert(std::endian::native == std::endian::little,
+              "the VTU writer emits the host byte order and declares LittleEndian");
+
+namespace {
+
+/// Escapes the five XML special characters for use inside a double-quoted attribute.
+std::string xml_escape(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    for (const char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+/// One DataArray of the appended block: its XML description and its payload size.
+struct Block {
+    std::string type;  ///< VTK type name: Float64, Int32, Int64, UInt8
+    std::string name;
+    int components = 1;
+    std::uint64_t bytes = 0;
+    std::uint64_t offset = 0;  ///< from the byte after '_' to this block's UInt64 header
+};
+
+std::string data_array_tag(const Block& b, std::string_view indent) {
+    return fmt::format(
+        "{}<DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\" format=\"appended\" "
+        "offset=\"{}\"/>\n",
+        indent, b.type, xml_escape(b.name), b.components, b.offset);
+}
+
+void write_raw(std::ostream& out, const void* data, std::uint64_t bytes) {
+    if (bytes > 0) {
+        out.write(static_cast<const char*>(data), static_cast<std::streamsize>(bytes));
+    }
+}
+
+void write_count(std::ostream& out, std::uint64_t bytes) { write_raw(out, &bytes, sizeof bytes); }
+
+/// Writes first, first+step, ... (n values) as Int64 without materialising the whole array.
+void write_int64_sequence(std::ostream& out, std::int64_t first, std::uint64_t n) {
+    std::array<std::int64_t, 4096> chunk{};
+    std::uint64_t done = 0;
+    while (done < n) {
+        const std::uint64_t m = std::min<std::uint64_t>(chunk.size(), n - done);
+        for (std::uint64_t k = 0; k < m; ++k) {
+            chunk[k] = first + static_cast<std::int64_t>(done + k);
+        }
+        write_raw(out, chunk.data(), m * sizeof(std::int64_t));
+        done += m;
+    }
+}
+
+void write_uint8_fill(std::ostream& out, std::uint8_t value, std::uint64_t n) {
+    std::array<std::uint8_t, 4096> chunk{};
+    chunk.fill(value);
+    std::uint64_t done = 0;
+    while (done < n) {
+        const std::uint64_t m = std::min<std::uint64_t>(chunk.size(), n - done);
+        write_raw(out, chunk.data(), m);
+        done += m;
+    }
+}
+
+void validate(const PointCloud& cloud) {
+    if (cloud.points.size() % 3 != 0) {
+        throw std::invalid_argument(fmt::format(
+            "write_vtu: point coordinate count {} is not a multiple of 3", cloud.points.size()));
+    }
+    const std::size_t n = cloud.size();
+    for (const PointArray& a : cloud.arrays) {
+        if (a.name.empty()) {
+            throw std::invalid_argument("write_vtu: a point-data array has an empty name");
+        }
+        if (a.components < 1) {
+            throw std::invalid_argument(fmt::format(
+                "write_vtu: array '{}' has {} components (must be >= 1)", a.name, a.components));
+        }
+        const std::size_t expected = n * static_cast<std::size_t>(a.components);
+        const std::size_t actual = a.is_integer ? a.integer.size() : a.real.size();
+        if (actual != expected) {
+            throw std::invalid_argument(fmt::format(
+                "write_vtu: array '{}' has {} {} values, expected {} ({} points x {} components)",
+                a.name, actual, a.is_integer ? "Int32" : "Float64", expected, n, a.components));
+        }
+    }
+}
+
+constexpr std::uint8_t vtk_vertex = 1;
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& file,
+                           const std::function<void(std::ostream&)>& body) {
+    // The temporary name is unique per process and call, so concurrent writers never collide.
+    static std::atomic<unsigned long> counter{0};
+    std::filesystem::path tmp = file;
+    tmp += fmt::format(".tmp.{}.{}", static_cast<long>(::getpid()), counter.fetch_add(1));
+
+    auto discard = [&tmp] {
+        std::error_code ignored;
+        std::filesystem::remove(tmp, ignored);
+    };
+
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) {
+            throw std::runtime_error(
+                fmt::format("cannot open '{}' for writing (writing '{}')", tmp.string(),
+                            file.string()));
+        }
+        try {
+            body(out);
+        } catch (...) {
+            out.close();
+            discard();
+            throw;
+        }
+        out.flush();
+        const bool ok = static_cast<bool>(out);
+        out.close();
+        if (!ok || out.fail()) {
+            discard();
+            throw std::runtime_error(fmt::format("error writing '{}'", file.string()));
+        }
+    }
+
+    std::error_code ec;
+    std::filesystem::rename(tmp, file, ec);
+    if (ec) {
+        discard();
+        throw std::runtime_error(fmt::format("cannot rename '{}' to '{}': {}", tmp.string(),
+                                             file.string(), ec.message()));
+    }
+}
+
+void write_vtu(const std::filesystem::path& file, const PointCloud& cloud) {
+    validate(cloud);
+    const std::uint64_t n = cloud.size();
+
+    // Appended blocks, in file order: points, cells, then the point-data arrays.
+    std::vector<Block> blocks;
+    blocks.push_back({"Float64", "Points", 3, 3 * n * sizeof(double), 0});
+    blocks.push_back({"Int64", "connectivity", 1, n * sizeof(std::int64_t), 0});
+    blocks.push_back({"Int64", "offsets", 1, n * sizeof(std::int64_t), 0});
+    blocks.push_back({"UInt8", "types", 1, n * sizeof(std::uint8_t), 0});
+    for (const PointArray& a : cloud.arrays) {
+        const std::uint64_t count = n * static_cast<std::uint64_t>(a.components);
+        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
+                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
+    }
+    std::uint64_t offset = 0;
+    for (Block& b : blocks) {
+        b.offset = offset;
+        offset += sizeof(std::uint64_t) + b.bytes;
+    }
+
+    std::string xml;
+    xml += "<?xml version=\"1.0\"?>\n";
+    xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n";
+    xml += "  <UnstructuredGrid>\n";
+    xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
+    xml += "      <PointData>\n";
+    for (std::size_t i = 4; i < blocks.size(); ++i) {
+        xml += data_array_tag(blocks[i], "        ");
+    }
+    xml += "      </PointData>\n";
+    xml += "      <Points>\n";
+    xml += data_array_tag(blocks[0], "        ");
+    xml += "      </Points>\n";
+    xml += "      <Cells>\n";
+    for (std::size_t i = 1; i < 4; ++i) {
+        xml += data_array_tag(blocks[i], "        ");
+    }
+    xml += "      </Cells>\n";
+    xml += "    </Piece>\n";
+    xml += "  </UnstructuredGrid>\n";
+    xml += "  <AppendedData encoding=\"raw\">\n   _";
+
+    write_file_atomically(file, [&](std::ostream& out) {
+        out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
+
+        write_count(out, blocks[0].bytes);
+        write_raw(out, cloud.points.data(), blocks[0].bytes);
+
+        write_count(out, blocks[1].bytes);
+        write_int64_sequence(out, 0, n);  // connectivity: point i is cell i
+        write_count(out, blocks[2].bytes);
+        write_int64_sequence(out, 1, n);  // offsets: end of each one-point cell
+        write_count(out, blocks[3].bytes);
+        write_uint8_fill(out, vtk_vertex, n);
+
+        for (std::size_t i = 0; i < cloud.arrays.size(); ++i) {
+            const PointArray& a = cloud.arrays[i];
+            const Block& b = blocks[4 + i];
+            write_count(out, b.bytes);
+            if (a.is_integer) {
+                write_raw(out, a.integer.data(), b.bytes);
+            } else {
+                write_raw(out, a.real.data(), b.bytes);
+            }
+        }
+
+        static constexpr std::string_view tail = "\n  </AppendedData>\n</VTKFile>\n";
+        out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
+    });
+}
+
+}  // namespace grit::io

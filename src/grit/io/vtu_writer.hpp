@@ -1,0 +1,28 @@
+// Writes a PointCloud as a VTK XML UnstructuredGrid (.vtu) with raw binary appended data.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+
+#include "grit/io/point_data.hpp"
+
+namespace grit::io {
+
+/// Writes `cloud` to `file` as a VTK XML UnstructuredGrid (version 1.0, LittleEndian,
+/// header_type UInt64) with all data in one raw `<AppendedData>` block. Every point is also
+/// a VTK_VERTEX cell, so ParaView shows the points without a filter. Points are Float64 x 3;
+/// each array is Float64 (or Int32 when `is_integer`) with its `components`. n = 0 is allowed.
+/// The file is written to a temporary file in the same directory and renamed into place.
+/// Throws std::invalid_argument if an array's size is not n * components (or the point
+/// count is not a multiple of 3), std::runtime_error naming the path on I/O failure.
+void write_vtu(const std::filesystem::path& file, const PointCloud& cloud);
+
+/// Runs `body` on a binary stream to a temporary file next to `file`, then renames the
+/// temporary file onto `file`, so readers never see a half-written file. The temporary file
+/// is removed if `body` throws. Throws std::runtime_error naming the path on I/O failure.
+/// Shared by the io writers that rewrite whole files.
+void write_file_atomically(const std::filesystem::path& file,
+                           const std::function<void(std::ostream&)>& body);
+
+}  // namespace grit::io

@@ -1,0 +1,27 @@
+// A material: its equation of state and the per-material coefficients the SPH sums use.
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include "grit/core/types.hpp"
+#include "grit/material/equation_of_state.hpp"
+
+namespace grit::material {
+
+struct Material {
+    std::string name;
+    std::string description;  ///< one line, with the source of the parameters
+    Phase phase = Phase::fluid;
+    EquationOfState eos = TaitEos{1000.0, 1480.0, 7.0};
+    double dynamic_viscosity = 0.0;  ///< mu_f [Pa s]; eq. (25) uses nu = mu_f / rho0
+    double artificial_viscosity_alpha = 0.1;  ///< alpha_pi of eq. (26) [-]
+    double artificial_viscosity_beta = 0.1;   ///< beta_pi of eq. (26) [-]
+    /// Pressure floor [Pa]: the EOS result is limited to at least this value (cavitation in tension).
+    double min_pressure = -std::numeric_limits<double>::infinity();
+
+    double reference_density() const { return material::reference_density(eos); }
+    double sound_speed() const { return reference_sound_speed(eos); }
+};
+
+}  // namespace grit::material

@@ -1,0 +1,47 @@
+// Verlet neighbour lists in compressed rows, built from a cell grid over particles sorted by cell.
+// Each particle lists every other particle within cutoff + skin (full lists, for gather loops); the
+// lists stay valid until some particle has moved more than skin / 2.
+#pragma once
+
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/neighbors/cell_grid.hpp"
+
+namespace grit::neighbors {
+
+template <int Dim>
+class NeighborList {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (cell_start from
+    /// sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin).
+    void build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index n,
+               double radius);
+
+    /// Neighbours of i: indices [begin(i), end(i)) into indices().
+    Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
+    Index end(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i) + 1]; }
+    const Index* indices() const noexcept { return indices_.data(); }
+    Index particle_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
+    std::size_t pair_count() const noexcept { return indices_.size(); }
+
+    /// Largest squared displacement of any particle since the last build.
+    double max_displacement2(const Vec* x, Index n) const;
+
+private:
+    template <class F>
+    void scan(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index i,
+              double r2max, F&& visit) const;
+
+    std::vector<Index> offsets_{0};
+    std::vector<Index> indices_;
+    std::vector<Vec> reference_positions_;
+};
+
+extern template class NeighborList<2>;
+extern template class NeighborList<3>;
+
+}  // namespace grit::neighbors

@@ -1,0 +1,98 @@
+// Loop shapes used by every physics stage: for_each over an index range and deterministic reductions.
+//
+// Results never depend on the number of threads: for_each writes only to index i (gather form), and
+// reductions add fixed-size blocks in a fixed order, so 1 and N threads give bit-identical sums.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "grit/core/types.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace grit::parallel {
+
+/// Number of threads the parallel loops will use.
+inline int max_threads() {
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+/// Sets the number of threads for the parallel loops (n >= 1).
+inline void set_threads(int n) {
+#ifdef _OPENMP
+    omp_set_num_threads(n);
+#else
+    (void)n;
+#endif
+}
+
+/// Calls f(i) for i in [0, n), in parallel. f must write only to per-i data.
+template <class F>
+void for_each(Index n, F&& f) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) f(i);
+}
+
+/// Calls f(i) for i in [0, n) with dynamic scheduling (for loops whose cost varies a lot per i).
+template <class F>
+void for_each_dynamic(Index n, F&& f) {
+#pragma omp parallel for schedule(dynamic, 256)
+    for (Index i = 0; i < n; ++i) f(i);
+}
+
+inline constexpr Index reduction_block = 4096;
+
+/// Sum of f(i) over [0, n) in a thread-count-independent order (blocks of `reduction_block`).
+template <class T, class F>
+T sum(Index n, T zero, F&& f) {
+    const Index blocks = (n + reduction_block - 1) / reduction_block;
+    std::vector<T> partial(static_cast<std::size_t>(blocks), zero);
+#pragma omp parallel for schedule(static)
+    for (Index b = 0; b < blocks; ++b) {
+        T s = zero;
+        const Index end = std::min(n, (b + 1) * reduction_block);
+        for (Index i = b * reduction_block; i < end; ++i) s += f(i);
+        partial[static_cast<std::size_t>(b)] = s;
+    }
+    T total = zero;
+    for (const T& s : partial) total += s;
+    return total;
+}
+
+/// Maximum of f(i) over [0, n); `lowest` when n == 0. Exact whatever the order.
+template <class F>
+double max(Index n, double lowest, F&& f) {
+    double m = lowest;
+#pragma omp parallel for schedule(static) reduction(max : m)
+    for (Index i = 0; i < n; ++i) m = std::max(m, f(i));
+    return m;
+}
+
+/// Minimum of f(i) over [0, n); `highest` when n == 0. Exact whatever the order.
+template <class F>
+double min(Index n, double highest, F&& f) {
+    double m = highest;
+#pragma omp parallel for schedule(static) reduction(min : m)
+    for (Index i = 0; i < n; ++i) m = std::min(m, f(i));
+    return m;
+}
+
+/// Smallest i in [0, n) with pred(i) true, or -1. Deterministic whatever the thread count.
+template <class P>
+Index first_index(Index n, P&& pred) {
+    Index first = n;
+#pragma omp parallel for schedule(static) reduction(min : first)
+    for (Index i = 0; i < n; ++i)
+        if (i < first && pred(i)) first = i;
+    return first == n ? Index{-1} : first;
+}
+
+}  // namespace grit::parallel

@@ -1,0 +1,156 @@
+// The registry of per-particle fields: named structure-of-arrays columns that are sorted, compacted,
+// grown, backed up and written together, so no model keeps private per-particle arrays.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/io/point_data.hpp"
+
+namespace grit::particles {
+
+/// Type-erased column; the registry moves particles through this interface only.
+class FieldBase {
+public:
+    explicit FieldBase(std::string name, bool output) : name_(std::move(name)), output_(output) {}
+    virtual ~FieldBase() = default;
+    FieldBase(const FieldBase&) = default;
+    FieldBase& operator=(const FieldBase&) = default;
+
+    const std::string& name() const { return name_; }
+    bool is_output() const { return output_; }
+
+    virtual void resize(Index n) = 0;
+    /// new[i] = old[source[i]]; reorders and removes in one pass.
+    virtual void gather(const std::vector<Index>& source) = 0;
+    virtual std::unique_ptr<FieldBase> clone() const = 0;
+    /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
+    virtual void append_output(io::PointCloud& cloud) const = 0;
+
+private:
+    std::string name_;
+    bool output_;
+};
+
+template <class T>
+class Field final : public FieldBase {
+public:
+    Field(std::string name, T fill, bool output) : FieldBase(std::move(name), output), fill_(fill) {}
+
+    T* data() noexcept { return values_.data(); }
+    const T* data() const noexcept { return values_.data(); }
+    T& operator[](Index i) noexcept { return values_[static_cast<std::size_t>(i)]; }
+    const T& operator[](Index i) const noexcept { return values_[static_cast<std::size_t>(i)]; }
+    Index size() const noexcept { return static_cast<Index>(values_.size()); }
+    const T& fill_value() const noexcept { return fill_; }
+
+    void resize(Index n) override { values_.resize(static_cast<std::size_t>(n), fill_); }
+    void gather(const std::vector<Index>& source) override {
+        std::vector<T> next(source.size());
+        for (std::size_t i = 0; i < source.size(); ++i) next[i] = values_[static_cast<std::size_t>(source[i])];
+        values_.swap(next);
+    }
+    std::unique_ptr<FieldBase> clone() const override { return std::make_unique<Field<T>>(*this); }
+    void append_output(io::PointCloud& cloud) const override;
+
+private:
+    std::vector<T> values_;
+    T fill_;
+};
+
+template <class T>
+void Field<T>::append_output(io::PointCloud& cloud) const {
+    io::PointArray a;
+    a.name = name();
+    if constexpr (std::is_same_v<T, double>) {
+        a.real = values_;
+    } else if constexpr (std::is_same_v<T, std::int32_t>) {
+        a.is_integer = true;
+        a.integer = values_;
+    } else if constexpr (std::is_same_v<T, core::Vec<2>> || std::is_same_v<T, core::Vec<3>>) {
+        constexpr int dim = std::is_same_v<T, core::Vec<2>> ? 2 : 3;
+        a.components = 3;
+        a.real.assign(values_.size() * 3, 0.0);
+        for (std::size_t i = 0; i < values_.size(); ++i)
+            for (int k = 0; k < dim; ++k) a.real[3 * i + static_cast<std::size_t>(k)] = values_[i][k];
+    } else {
+        static_assert(sizeof(T) == 0, "field type has no output form");
+    }
+    cloud.arrays.push_back(std::move(a));
+}
+
+/// All fields of one particle set. Fields are created by the models that need them.
+class FieldRegistry {
+public:
+    FieldRegistry() = default;
+    FieldRegistry(const FieldRegistry& other) : size_(other.size_) {
+        for (const auto& f : other.fields_) fields_.push_back(f->clone());
+        for (std::size_t k = 0; k < fields_.size(); ++k) index_[fields_[k]->name()] = k;
+    }
+    FieldRegistry& operator=(const FieldRegistry& other) {
+        if (this != &other) {
+            FieldRegistry copy(other);
+            fields_.swap(copy.fields_);
+            index_.swap(copy.index_);
+            size_ = copy.size_;
+        }
+        return *this;
+    }
+    FieldRegistry(FieldRegistry&&) = default;
+    FieldRegistry& operator=(FieldRegistry&&) = default;
+
+    /// Adds a field (or returns the existing one of the same name and type).
+    template <class T>
+    Field<T>& add(const std::string& name, T fill, bool output) {
+        if (auto it = index_.find(name); it != index_.end()) {
+            auto* f = dynamic_cast<Field<T>*>(fields_[it->second].get());
+            if (!f) throw std::logic_error("field '" + name + "' already registered with another type");
+            return *f;
+        }
+        auto field = std::make_unique<Field<T>>(name, fill, output);
+        field->resize(size_);
+        auto& ref = *field;
+        index_[name] = fields_.size();
+        fields_.push_back(std::move(field));
+        return ref;
+    }
+
+    template <class T>
+    Field<T>& get(const std::string& name) {
+        auto it = index_.find(name);
+        if (it == index_.end()) throw std::logic_error("no field '" + name + "'");
+        auto* f = dynamic_cast<Field<T>*>(fields_[it->second].get());
+        if (!f) throw std::logic_error("field '" + name + "' has another type");
+        return *f;
+    }
+
+    bool has(const std::string& name) const { return index_.count(name) != 0; }
+    Index size() const noexcept { return size_; }
+
+    void resize(Index n) {
+        for (auto& f : fields_) f->resize(n);
+        size_ = n;
+    }
+    void gather(const std::vector<Index>& source) {
+        for (auto& f : fields_) f->gather(source);
+        size_ = static_cast<Index>(source.size());
+    }
+    void append_output(io::PointCloud& cloud) const {
+        for (const auto& f : fields_)
+            if (f->is_output()) f->append_output(cloud);
+    }
+
+private:
+    std::vector<std::unique_ptr<FieldBase>> fields_;
+    std::map<std::string, std::size_t, std::less<>> index_;
+    Index size_ = 0;
+};
+
+}  // namespace grit::particles

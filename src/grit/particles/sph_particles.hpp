@@ -1,0 +1,114 @@
+// The SPH particle set: fluid, solid and wall particles in one structure of arrays, so that they meet in
+// the same neighbour loops (fluid-solid interaction is SPH interaction, first seed paper section 2).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/particles/field_registry.hpp"
+
+namespace grit::particles {
+
+template <int Dim>
+class SphParticles {
+public:
+    using Vec = core::Vec<Dim>;
+
+    SphParticles()
+        : position_(&fields_.add<Vec>("position", Vec::zero(), false)),
+          velocity_(&fields_.add<Vec>("velocity", Vec::zero(), true)),
+          velocity_half_(&fields_.add<Vec>("velocity_half", Vec::zero(), false)),
+          acceleration_(&fields_.add<Vec>("acceleration", Vec::zero(), false)),
+          density_(&fields_.add<double>("density", 0.0, true)),
+          density_half_(&fields_.add<double>("density_half", 0.0, false)),
+          density_rate_(&fields_.add<double>("density_rate", 0.0, false)),
+          pressure_(&fields_.add<double>("pressure", 0.0, true)),
+          mass_(&fields_.add<double>("mass", 0.0, true)),
+          phase_(&fields_.add<std::int32_t>("phase", 0, true)),
+          material_(&fields_.add<std::int32_t>("material", 0, true)) {}
+
+    SphParticles(const SphParticles& o) : fields_(o.fields_) { rebind(); }
+    SphParticles& operator=(const SphParticles& o) {
+        fields_ = o.fields_;
+        rebind();
+        return *this;
+    }
+
+    FieldRegistry& fields() noexcept { return fields_; }
+    const FieldRegistry& fields() const noexcept { return fields_; }
+    Index size() const noexcept { return fields_.size(); }
+
+    /// Grows the set by n particles (fields take their fill values) and returns the first new index.
+    Index append(Index n) {
+        const Index first = size();
+        fields_.resize(first + n);
+        return first;
+    }
+    /// Reorders and/or removes particles: new[i] = old[source[i]].
+    void gather(const std::vector<Index>& source) { fields_.gather(source); }
+
+    Vec* position() noexcept { return position_->data(); }
+    Vec* velocity() noexcept { return velocity_->data(); }
+    Vec* acceleration() noexcept { return acceleration_->data(); }
+    /// Leap-frog state: velocity and density at the half step t + dt/2 (velocity() and density()
+    /// hold the values at t that the SPH sums read).
+    Vec* velocity_half() noexcept { return velocity_half_->data(); }
+    double* density_half() noexcept { return density_half_->data(); }
+    double* density() noexcept { return density_->data(); }
+    double* density_rate() noexcept { return density_rate_->data(); }
+    double* pressure() noexcept { return pressure_->data(); }
+    double* mass() noexcept { return mass_->data(); }
+    std::int32_t* phase() noexcept { return phase_->data(); }
+    std::int32_t* material() noexcept { return material_->data(); }
+
+    const Vec* position() const noexcept { return position_->data(); }
+    const Vec* velocity() const noexcept { return velocity_->data(); }
+    const double* density() const noexcept { return density_->data(); }
+    const double* pressure() const noexcept { return pressure_->data(); }
+    const double* mass() const noexcept { return mass_->data(); }
+    const std::int32_t* phase() const noexcept { return phase_->data(); }
+    const std::int32_t* material() const noexcept { return material_->data(); }
+
+    /// Points and every output field, ready for a snapshot writer.
+    io::PointCloud snapshot() const {
+        io::PointCloud cloud;
+        cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
+        const Vec* x = position();
+        for (Index i = 0; i < size(); ++i)
+            for (int k = 0; k < Dim; ++k) cloud.points[3 * static_cast<std::size_t>(i) + k] = x[i][k];
+        fields_.append_output(cloud);
+        return cloud;
+    }
+
+private:
+    void rebind() {
+        position_ = &fields_.get<Vec>("position");
+        velocity_ = &fields_.get<Vec>("velocity");
+        velocity_half_ = &fields_.get<Vec>("velocity_half");
+        acceleration_ = &fields_.get<Vec>("acceleration");
+        density_ = &fields_.get<double>("density");
+        density_half_ = &fields_.get<double>("density_half");
+        density_rate_ = &fields_.get<double>("density_rate");
+        pressure_ = &fields_.get<double>("pressure");
+        mass_ = &fields_.get<double>("mass");
+        phase_ = &fields_.get<std::int32_t>("phase");
+        material_ = &fields_.get<std::int32_t>("material");
+    }
+
+    FieldRegistry fields_;
+    Field<Vec>* position_;
+    Field<Vec>* velocity_;
+    Field<Vec>* velocity_half_;
+    Field<Vec>* acceleration_;
+    Field<double>* density_;
+    Field<double>* density_half_;
+    Field<double>* density_rate_;
+    Field<double>* pressure_;
+    Field<double>* mass_;
+    Field<std::int32_t>* phase_;
+    Field<std::int32_t>* material_;
+};
+
+}  // namespace grit::particles

@@ -1,0 +1,83 @@
+// Particle lattices for geometry primitives.
+#include "grit/sim/geometry.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace grit::sim {
+
+namespace {
+
+/// Calls f(point) for each cell centre of the lattice over [lo, hi) with spacing dx aligned at lo.
+template <int Dim, class F>
+void for_each_lattice_point(const core::Vec<Dim>& lo, const core::Vec<Dim>& hi, double dx, F&& f) {
+    std::array<long, Dim> n{};
+    for (int k = 0; k < Dim; ++k) n[k] = std::max(0L, std::lround(std::floor((hi[k] - lo[k]) / dx + 1e-6)));
+    std::array<long, Dim> i{};
+    long total = 1;
+    for (int k = 0; k < Dim; ++k) total *= n[k];
+    for (long flat = 0; flat < total; ++flat) {
+        long rest = flat;
+        for (int k = 0; k < Dim; ++k) {
+            i[k] = rest % n[k];
+            rest /= n[k];
+        }
+        core::Vec<Dim> x{};
+        for (int k = 0; k < Dim; ++k) x[k] = lo[k] + (static_cast<double>(i[k]) + 0.5) * dx;
+        f(x);
+    }
+}
+
+template <int Dim>
+core::Vec<Dim> to_vec(const std::vector<double>& v) {
+    core::Vec<Dim> x{};
+    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
+    return x;
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx) {
+    using Vec = core::Vec<Dim>;
+    std::vector<Vec> points;
+    if (shape.kind == "box") {
+        for_each_lattice_point<Dim>(to_vec<Dim>(shape.min), to_vec<Dim>(shape.max), dx,
+                                    [&](const Vec& x) { points.push_back(x); });
+    } else if (shape.kind == "disc") {
+        const Vec c = to_vec<Dim>(shape.center);
+        // Align the lattice so that a point sits a half spacing off the centre in every direction.
+        const double r = shape.radius;
+        const double half = std::ceil(r / dx) * dx;
+        for_each_lattice_point<Dim>(c - Vec::filled(half), c + Vec::filled(half), dx, [&](const Vec& x) {
+            if (core::norm2(x - c) <= r * r) points.push_back(x);
+        });
+    } else if (shape.kind == "tank") {
+        const Vec lo = to_vec<Dim>(shape.min), hi = to_vec<Dim>(shape.max);
+        const double t = shape.layers * dx;
+        auto is_open = [&](const char* side) {
+            return std::find(shape.open.begin(), shape.open.end(), std::string(side)) != shape.open.end();
+        };
+        // Sides per axis: x: left/right, y (2D): bottom/top; 3D: y front/back, z bottom/top.
+        const char* low_side[3] = {"left", Dim == 2 ? "bottom" : "front", "bottom"};
+        const char* high_side[3] = {"right", Dim == 2 ? "top" : "back", "top"};
+        Vec outer_lo = lo, outer_hi = hi;
+        for (int k = 0; k < Dim; ++k) {
+            if (!is_open(low_side[k])) outer_lo[k] -= t;
+            if (!is_open(high_side[k])) outer_hi[k] += t;
+        }
+        for_each_lattice_point<Dim>(outer_lo, outer_hi, dx, [&](const Vec& x) {
+            bool inside = true;
+            for (int k = 0; k < Dim; ++k) inside = inside && x[k] > lo[k] && x[k] < hi[k];
+            if (!inside) points.push_back(x);
+        });
+    }
+    return points;
+}
+
+template std::vector<core::Vec<2>> lattice_points<2>(const io::ShapeSpec&, double);
+template std::vector<core::Vec<3>> lattice_points<3>(const io::ShapeSpec&, double);
+
+}  // namespace grit::sim

@@ -1,0 +1,19 @@
+// Particle lattices for the geometry primitives of a case file (box, disc/sphere, tank walls).
+#pragma once
+
+#include <vector>
+
+#include "grit/core/vec.hpp"
+#include "grit/io/case_spec.hpp"
+
+namespace grit::sim {
+
+/// Lattice points (spacing dx, cell-centred, aligned with the shape's min corner) filling `shape`.
+/// A tank yields its walls: `layers` of points outside the inner box on every side not listed as open.
+template <int Dim>
+std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx);
+
+extern template std::vector<core::Vec<2>> lattice_points<2>(const io::ShapeSpec&, double);
+extern template std::vector<core::Vec<3>> lattice_points<3>(const io::ShapeSpec&, double);
+
+}  // namespace grit::sim

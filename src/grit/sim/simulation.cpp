@@ -1,0 +1,492 @@
+// A run of one case: set-up from the case spec, the step pipeline, outputs and blow-up handling.
+#include "grit/sim/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "grit/analysis/probes.hpp"
+#include "grit/boundary/wall_pressure.hpp"
+#include "grit/core/error.hpp"
+#include "grit/io/vtu_writer.hpp"
+#include "grit/parallel/parallel.hpp"
+#include "grit/sim/geometry.hpp"
+#include "grit/sim/progress.hpp"
+#include "grit/sph/pressure.hpp"
+
+namespace grit::sim {
+
+namespace {
+
+template <int Dim>
+core::Vec<Dim> to_vec(const std::vector<double>& v) {
+    core::Vec<Dim> x{};
+    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
+    return x;
+}
+
+template <int Dim>
+bool inside(const core::Vec<Dim>& x, const std::vector<double>& lo, const std::vector<double>& hi) {
+    for (int k = 0; k < Dim; ++k)
+        if (x[k] < lo[static_cast<std::size_t>(k)] || x[k] > hi[static_cast<std::size_t>(k)]) return false;
+    return true;
+}
+
+const char* phase_name(std::int32_t p) {
+    switch (static_cast<Phase>(p)) {
+        case Phase::fluid: return "fluid";
+        case Phase::solid: return "solid";
+        case Phase::wall: return "wall";
+        case Phase::grain: return "grain";
+    }
+    return "unknown";
+}
+
+}  // namespace
+
+template <int Dim>
+Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
+    : spec_(std::move(spec)),
+      options_(std::move(options)),
+      kernel_(sph::CubicSpline<Dim>(1.0)),
+      spacing_(spec_.particle_spacing),
+      smoothing_length_(spec_.smoothing_ratio * spec_.particle_spacing) {
+    if (spec_.dimension != Dim) throw std::logic_error("case dimension does not match the simulation");
+    sph::make_kernel<Dim>(spec_.kernel, smoothing_length_, kernel_);
+
+    fluid_parameters_.gravity = to_vec<Dim>(spec_.gravity);
+    fluid_parameters_.density_diffusion = spec_.density_diffusion;
+    double fastest = 0.0;
+    for (const auto& m : spec_.materials) {
+        fluid_parameters_.materials.push_back({m.sound_speed(), m.reference_density(), m.artificial_viscosity_alpha,
+                                               m.artificial_viscosity_beta,
+                                               m.dynamic_viscosity / m.reference_density()});
+        fastest = std::max(fastest, m.sound_speed());
+    }
+    for (const auto& in : spec_.inlets) fastest = std::max(fastest, in.velocity);
+    max_speed_ = spec_.max_speed > 0.0 ? spec_.max_speed : 2.0 * fastest;
+    domain_min_ = to_vec<Dim>(spec_.domain_min);
+    domain_max_ = to_vec<Dim>(spec_.domain_max);
+
+    build_particles();
+    for (const auto& in : spec_.inlets) {
+        const auto& m = spec_.materials[static_cast<std::size_t>(in.material)];
+        inlets_.emplace_back(in, spacing_, m.reference_density(), m.reference_density() * std::pow(spacing_, Dim));
+    }
+    build_pipeline();
+}
+
+template <int Dim>
+void Simulation<Dim>::build_particles() {
+    const double dx = spacing_;
+    const double cell_volume = std::pow(dx, Dim);
+    const Vec g = to_vec<Dim>(spec_.gravity);
+    const double g_norm = core::norm(g);
+
+    auto add_block = [&](const io::BlockSpec& b, Phase phase) {
+        const auto points = lattice_points<Dim>(b.shape, dx);
+        if (points.empty())
+            throw core::InputError(fmt::format("{}: the shape holds no particle at numerics.particle_spacing = {} m",
+                                               b.key, dx));
+        const auto& mat = spec_.materials[static_cast<std::size_t>(b.material)];
+        const double rho0 = mat.reference_density();
+        // Hydrostatic start: p = rho0 |g| depth below the block's free surface (its highest point).
+        double top = 0.0;
+        if (b.hydrostatic && g_norm > 0.0) {
+            top = -1e300;
+            for (const auto& x : points) top = std::max(top, -core::dot(g, x) / g_norm);
+            top += 0.5 * dx;
+        }
+        const Index first = particles_.append(static_cast<Index>(points.size()));
+        Vec* x = particles_.position();
+        Vec* v = particles_.velocity();
+        double* rho = particles_.density();
+        double* p = particles_.pressure();
+        double* m = particles_.mass();
+        std::int32_t* ph = particles_.phase();
+        std::int32_t* mi = particles_.material();
+        Vec* v_half = particles_.velocity_half();
+        double* rho_half = particles_.density_half();
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const Index i = first + static_cast<Index>(k);
+            x[i] = points[k];
+            v[i] = phase == Phase::fluid ? to_vec<Dim>(b.velocity) : Vec::zero();
+            v_half[i] = v[i];
+            p[i] = 0.0;
+            if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
+            rho[i] = material::density_from_pressure(mat.eos, p[i]);
+            rho_half[i] = rho[i];
+            m[i] = rho0 * cell_volume;
+            ph[i] = static_cast<std::int32_t>(phase);
+            mi[i] = b.material;
+        }
+    };
+    for (const auto& f : spec_.fluids) add_block(f, Phase::fluid);
+    for (const auto& w : spec_.walls) add_block(w, Phase::wall);
+
+    const Vec* x = particles_.position();
+    for (Index i = 0; i < particles_.size(); ++i)
+        if (!inside<Dim>(x[i], spec_.domain_min, spec_.domain_max))
+            throw core::InputError(fmt::format(
+                "key 'domain.min'/'domain.max': a {} particle at ({}) lies outside the domain; enlarge the domain",
+                phase_name(particles_.phase()[i]),
+                fmt::join(std::vector<double>(x[i].c, x[i].c + Dim), ", ")));
+}
+
+template <int Dim>
+void Simulation<Dim>::build_pipeline() {
+    pipeline_.add("integrate_predict", [this] { integrate_predict(); });
+    pipeline_.add("boundaries", [this] { apply_boundaries(); });
+    pipeline_.add("neighbors", [this] { update_neighbors(false); });
+    pipeline_.add("equation_of_state",
+                  [this] { sph::update_pressure(particles_, spec_.materials, Phase::fluid); });
+    pipeline_.add("wall_pressure", [this] {
+        boundary::update_wall_pressure(particles_, neighbors_, kernel_, fluid_parameters_.gravity, spec_.materials);
+    });
+    pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_); });
+    pipeline_.add("integrate_update", [this] { integrate_update(); });
+    pipeline_.add("health_check", [this] { check_health(); });
+    pipeline_.add("time_step", [this] { compute_time_step(); });
+}
+
+// Leap-frog (Liu & Liu 2003, the scheme of the first seed paper): positions at whole steps, velocity
+// and density at half steps. The sums read velocity and density predicted to the whole step,
+//   v^n = v^(n-1/2) + dt/2 a^(n-1),  rho^n = rho^(n-1/2) + dt/2 drho^(n-1),
+// then  v^(n+1/2) = v^(n-1/2) + dt a^n,  rho^(n+1/2) = rho^(n-1/2) + dt drho^n,  x^(n+1) = x^n + dt v^(n+1/2).
+// The first step starts the half-step values with dt/2. Density and position are thus evaluated at the
+// same instant; a kick-drift-kick update that reads rho^(n+1/2) at x^(n+1) grows free-surface
+// oscillations at C_F = 0.2 (measured: docs/theory.md).
+template <int Dim>
+void Simulation<Dim>::integrate_predict() {
+    if (step_ == 0) return;
+    const double half = 0.5 * dt_;
+    Vec* v = particles_.velocity();
+    double* rho = particles_.density();
+    const Vec* v_half = particles_.velocity_half();
+    const double* rho_half = particles_.density_half();
+    const Vec* a = particles_.acceleration();
+    const double* drho = particles_.density_rate();
+    const std::int32_t* ph = particles_.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    parallel::for_each(particles_.size(), [&](Index i) {
+        if (ph[i] != fluid) return;
+        v[i] = v_half[i] + a[i] * half;
+        rho[i] = rho_half[i] + drho[i] * half;
+    });
+}
+
+template <int Dim>
+void Simulation<Dim>::integrate_update() {
+    const double kick = step_ == 0 ? 0.5 * dt_ : dt_;
+    const double dt = dt_;
+    Vec* x = particles_.position();
+    Vec* v = particles_.velocity();
+    double* rho = particles_.density();
+    Vec* v_half = particles_.velocity_half();
+    double* rho_half = particles_.density_half();
+    const Vec* a = particles_.acceleration();
+    const double* drho = particles_.density_rate();
+    const std::int32_t* ph = particles_.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    parallel::for_each(particles_.size(), [&](Index i) {
+        if (ph[i] != fluid) return;
+        v_half[i] += a[i] * kick;
+        rho_half[i] += drho[i] * kick;
+        x[i] += v_half[i] * dt;
+        // Between steps, velocity and density show the half-step state (outputs, diagnostics).
+        v[i] = v_half[i];
+        rho[i] = rho_half[i];
+    });
+}
+
+template <int Dim>
+void Simulation<Dim>::apply_boundaries() {
+    // Outlets and (with domain.on_exit = "remove") the domain's faces remove fluid and book its mass.
+    if (!spec_.outlets.empty() || spec_.remove_leaving) {
+        const Vec* x = particles_.position();
+        const double* m = particles_.mass();
+        const std::int32_t* ph = particles_.phase();
+        const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+        const Index n = particles_.size();
+        std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
+        parallel::for_each(n, [&](Index i) {
+            if (ph[i] != fluid) return;
+            bool out = spec_.remove_leaving && !inside<Dim>(x[i], spec_.domain_min, spec_.domain_max);
+            for (const auto& o : spec_.outlets) out = out || inside<Dim>(x[i], o.min, o.max);
+            gone[static_cast<std::size_t>(i)] = out;
+        });
+        const Index removed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
+        if (removed > 0) {
+            std::vector<Index> keep;
+            keep.reserve(static_cast<std::size_t>(n - removed));
+            for (Index i = 0; i < n; ++i) {
+                if (gone[static_cast<std::size_t>(i)])
+                    mass_out_ += m[i];
+                else
+                    keep.push_back(i);
+            }
+            particles_.gather(keep);
+            neighbors_stale_ = true;
+        }
+    }
+    for (auto& inlet : inlets_) {
+        const double emitted = inlet.emit(particles_, time_, dt_);
+        if (emitted > 0.0) {
+            mass_in_ += emitted;
+            neighbors_stale_ = true;
+        }
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::update_neighbors(bool force) {
+    const double skin = spec_.neighbor_skin * smoothing_length_;
+    const double support = std::visit([](const auto& k) { return k.support(); }, kernel_);
+    const Index n = particles_.size();
+    if (!force && !neighbors_stale_ && neighbors_.max_displacement2(particles_.position(), n) < 0.25 * skin * skin)
+        return;
+    // Sort every field by cell, then list neighbours; sorting keeps neighbours close in memory.
+    const double radius = support + skin;
+    grid_ = neighbors::CellGrid<Dim>::covering(particles_.position(), n, radius);
+    neighbors::sort_by_cell(grid_, particles_.position(), n, order_, cell_start_);
+    particles_.gather(order_);
+    neighbors_.build(grid_, cell_start_, particles_.position(), n, radius);
+    neighbors_stale_ = false;
+    ++neighbor_builds_;
+}
+
+template <int Dim>
+void Simulation<Dim>::compute_time_step() {
+    // Eq. (51): dt = C_F min_a h / (c_a + |v_a|), with Monaghan's force condition 0.25 sqrt(h/|a|) and
+    // the viscous condition 0.125 h^2 / nu.
+    const double h = smoothing_length_;
+    const Vec* v = particles_.velocity();
+    const Vec* a = particles_.acceleration();
+    const std::int32_t* ph = particles_.phase();
+    const std::int32_t* mat = particles_.material();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const auto* coef = fluid_parameters_.materials.data();
+    const double huge = std::numeric_limits<double>::max();
+    const double cfl = parallel::min(particles_.size(), huge, [&](Index i) {
+        if (ph[i] != fluid) return huge;
+        return h / (coef[mat[i]].sound_speed + core::norm(v[i]));
+    });
+    const double amax2 = parallel::max(particles_.size(), 0.0, [&](Index i) {
+        return ph[i] == fluid ? core::norm2(a[i]) : 0.0;
+    });
+    double dt = spec_.cfl * cfl;
+    if (amax2 > 0.0) dt = std::min(dt, 0.25 * std::sqrt(h / std::sqrt(amax2)));
+    for (const auto& c : fluid_parameters_.materials)
+        if (c.kinematic_viscosity > 0.0) dt = std::min(dt, 0.125 * h * h / c.kinematic_viscosity);
+    if (!std::isfinite(dt) || dt >= huge) {
+        // No fluid yet (an inlet that has not started): step by the inlet's own scale.
+        dt = spec_.cfl * h / max_speed_;
+    }
+    dt_ = std::min(dt, spec_.max_time_step);
+}
+
+template <int Dim>
+void Simulation<Dim>::check_health() {
+    const Vec* x = particles_.position();
+    const Vec* v = particles_.velocity();
+    const double* rho = particles_.density();
+    const double* p = particles_.pressure();
+    const std::int32_t* ph = particles_.phase();
+    const auto wall = static_cast<std::int32_t>(Phase::wall);
+    const double vmax2 = max_speed_ * max_speed_;
+    const bool check_domain = !spec_.remove_leaving;
+    const Index bad = parallel::first_index(particles_.size(), [&](Index i) {
+        if (ph[i] == wall) return false;
+        return !core::all_finite(x[i]) || !core::all_finite(v[i]) || !(rho[i] > 0.0) || !std::isfinite(rho[i]) ||
+               !std::isfinite(p[i]) || core::norm2(v[i]) > vmax2 ||
+               (check_domain && !inside<Dim>(x[i], spec_.domain_min, spec_.domain_max));
+    });
+    if (bad < 0) {
+        if (step_ % spec_.check_interval == 0) {
+            last_good_ = particles_;
+            last_good_time_ = time_;
+            last_good_step_ = step_;
+        }
+        return;
+    }
+    std::string what;
+    if (!core::all_finite(x[bad]))
+        what = "position is not finite";
+    else if (!core::all_finite(v[bad]))
+        what = "velocity is not finite";
+    else if (!(rho[bad] > 0.0) || !std::isfinite(rho[bad]))
+        what = fmt::format("density = {:.6g} kg/m^3 is not positive and finite", rho[bad]);
+    else if (!std::isfinite(p[bad]))
+        what = "pressure is not finite";
+    else if (core::norm2(v[bad]) > vmax2)
+        what = fmt::format("speed = {:.6g} m/s exceeds numerics.max_speed = {:.6g} m/s (runaway)", core::norm(v[bad]),
+                           max_speed_);
+    else
+        what = "escaped the domain (domain.min/domain.max)";
+    std::string message =
+        fmt::format("numerical blow-up at step {} (t = {:.9g} s): {} particle {} at ({:.6g}): {}", step_, time_,
+                    phase_name(ph[bad]), bad, fmt::join(std::vector<double>(x[bad].c, x[bad].c + Dim), ", "), what);
+    if (options_.write_files) {
+        const auto file = fmt::format("snapshots/{}_last_good_{:06}.vtu", spec_.name, last_good_step_);
+        io::write_vtu(options_.output_dir / file, last_good_.snapshot());
+        pvd_->add(last_good_time_, file);
+        message += fmt::format("; last good state (step {}, t = {:.9g} s) written to {}", last_good_step_,
+                               last_good_time_, (options_.output_dir / file).string());
+    }
+    throw core::BlowUpError(message);
+}
+
+template <int Dim>
+void Simulation<Dim>::prime() {
+    update_neighbors(true);
+    pipeline_.run_only({"equation_of_state", "wall_pressure", "sph_fluid", "time_step"});
+    // The first step recomputes these rates at the same state; prime only sizes the first dt.
+    last_good_ = particles_;
+}
+
+template <int Dim>
+void Simulation<Dim>::step() {
+    const double dt = dt_;  // the time_step stage replaces dt_ with the next step's value
+    pipeline_.run();
+    time_ += dt;
+    ++step_;
+    particle_steps_ += particles_.size();
+    pair_steps_ += static_cast<double>(neighbors_.pair_count());
+}
+
+template <int Dim>
+double Simulation<Dim>::probe(std::size_t k) const {
+    return analysis::evaluate_probe(spec_.probes[k], particles_, kernel_, spacing_);
+}
+
+template <int Dim>
+void Simulation<Dim>::write_output() {
+    if (!options_.write_files) return;
+    if (spec_.write_snapshots) {
+        const auto file = fmt::format("snapshots/{}_{:06}.vtu", spec_.name, snapshot_index_++);
+        io::write_vtu(options_.output_dir / file, particles_.snapshot());
+        pvd_->add(time_, file);
+    }
+    const auto d = analysis::compute_diagnostics(particles_);
+    std::vector<double> row = {time_, static_cast<double>(step_), dt_, d.kinetic_energy, d.mass, mass_in_, mass_out_,
+                               d.max_velocity, static_cast<double>(particles_.size())};
+    for (std::size_t k = 0; k < spec_.probes.size(); ++k) row.push_back(probe(k));
+    series_->write_row(row);
+}
+
+template <int Dim>
+RunSummary Simulation<Dim>::summarize(double wall_time) const {
+    RunSummary s;
+    s.particles = particles_.size();
+    s.steps = step_;
+    s.end_time = time_;
+    s.wall_time_s = wall_time;
+    s.particle_steps_per_second = wall_time > 0.0 ? particle_steps_ / wall_time : 0.0;
+    s.pair_interactions_per_second = wall_time > 0.0 ? pair_steps_ / wall_time : 0.0;
+    const auto d = analysis::compute_diagnostics(particles_);
+    s.kinetic_energy = d.kinetic_energy;
+    s.mass_total = d.mass;
+    s.mass_in = mass_in_;
+    s.mass_out = mass_out_;
+    s.max_velocity = d.max_velocity;
+    s.momentum.assign(d.momentum.c, d.momentum.c + Dim);
+    for (std::size_t k = 0; k < spec_.probes.size(); ++k) {
+        s.probe_names.push_back(spec_.probes[k].name);
+        s.probe_values.push_back(probe(k));
+    }
+    s.stages = pipeline_.timers();
+    return s;
+}
+
+template <int Dim>
+void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& status, const std::string& message) const {
+    if (!options_.write_files) return;
+    nlohmann::ordered_json j;
+    j["case"] = spec_.name;
+    j["title"] = spec_.title;
+    j["status"] = status;
+    if (!message.empty()) j["message"] = message;
+    j["dimension"] = Dim;
+    j["threads"] = parallel::max_threads();
+    j["particles"] = s.particles;
+    j["steps"] = s.steps;
+    j["end_time"] = s.end_time;
+    j["wall_time_s"] = s.wall_time_s;
+    j["particle_steps_per_second"] = s.particle_steps_per_second;
+    j["pair_interactions_per_second"] = s.pair_interactions_per_second;
+    j["neighbor_list_builds"] = neighbor_builds_;
+    j["kinetic_energy"] = s.kinetic_energy;
+    j["mass_total"] = s.mass_total;
+    j["mass_in"] = s.mass_in;
+    j["mass_out"] = s.mass_out;
+    j["max_velocity"] = s.max_velocity;
+    j["momentum"] = s.momentum;
+    for (std::size_t k = 0; k < s.probe_names.size(); ++k) {
+        const double v = s.probe_values[k];
+        j["probes"][s.probe_names[k]] = std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+    }
+    for (const auto& t : s.stages) j["stage_seconds"][t.name] = t.seconds;
+    std::ofstream out(options_.output_dir / "summary.json");
+    out << j.dump(2) << '\n';
+}
+
+template <int Dim>
+RunSummary Simulation<Dim>::run() {
+    namespace fs = std::filesystem;
+    if (options_.write_files) {
+        fs::create_directories(options_.output_dir / "snapshots");
+        for (const auto& e : fs::directory_iterator(options_.output_dir / "snapshots"))
+            if (e.path().extension() == ".vtu") fs::remove(e.path());
+        pvd_ = std::make_unique<io::PvdWriter>(options_.output_dir / (spec_.name + ".pvd"));
+        std::vector<std::string> columns = {"time",     "step",     "dt",           "kinetic_energy", "mass_total",
+                                            "mass_in",  "mass_out", "max_velocity", "particles"};
+        for (const auto& p : spec_.probes) columns.push_back(p.name);
+        series_ = std::make_unique<io::SeriesWriter>(options_.output_dir / "series.csv", columns);
+    }
+    core::Stopwatch clock;
+    Progress progress(!options_.quiet);
+    try {
+        prime();
+        write_output();
+        next_output_ = spec_.output_interval;
+        const double end = spec_.end_time;
+        while (time_ < end * (1.0 - 1e-12)) {
+            // Land exactly on output times and on the end time.
+            const double target = std::min(end, next_output_);
+            if (time_ + dt_ > target) dt_ = target - time_;
+            step();
+            if (time_ >= next_output_ * (1.0 - 1e-12) || time_ >= end * (1.0 - 1e-12)) {
+                write_output();
+                while (next_output_ <= time_ * (1.0 + 1e-12)) next_output_ += spec_.output_interval;
+            }
+            progress.update(time_, end, step_);
+        }
+        progress.update(time_, end, step_, true);
+        progress.finish();
+    } catch (const core::BlowUpError& e) {
+        progress.finish();
+        write_summary(summarize(clock.seconds()), "blow_up", e.what());
+        throw;
+    }
+    RunSummary summary = summarize(clock.seconds());
+    write_summary(summary, "completed", "");
+    return summary;
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+RunSummary run_case(const io::CaseSpec& spec, const RunOptions& options) {
+    if (spec.dimension == 2) {
+        Simulation<2> s(spec, options);
+        return s.run();
+    }
+    Simulation<3> s(spec, options);
+    return s.run();
+}
+
+}  // namespace grit::sim

@@ -1,0 +1,47 @@
+// The fluid SPH sums: density rate (continuity, first seed paper eq. 22) and acceleration (momentum,
+// eq. 23) with Monaghan artificial viscosity (eqs. 26-27), laminar viscosity (eq. 25), optional
+// density diffusion (delta-SPH) and gravity.
+#pragma once
+
+#include <vector>
+
+#include "grit/core/vec.hpp"
+#include "grit/neighbors/neighbor_list.hpp"
+#include "grit/particles/sph_particles.hpp"
+#include "grit/sph/kernels.hpp"
+
+namespace grit::sph {
+
+/// Per-material coefficients the pair sums read, indexed by the particle's material.
+struct PairCoefficients {
+    double sound_speed;          ///< c0 [m/s]
+    double reference_density;    ///< rho0 [kg/m^3]
+    double alpha;                ///< artificial viscosity alpha_pi [-]
+    double beta;                 ///< artificial viscosity beta_pi [-]
+    double kinematic_viscosity;  ///< nu = mu_f / rho0 [m^2/s]
+};
+
+template <int Dim>
+struct FluidRateParameters {
+    core::Vec<Dim> gravity = core::Vec<Dim>::zero();  ///< [m/s^2]
+    /// delta of the density-diffusion term (Molteni & Colagrossi 2009 with the hydrostatic correction
+    /// of Fourtakas et al. 2019); 0 switches it off.
+    double density_diffusion = 0.0;
+    std::vector<PairCoefficients> materials;
+};
+
+/// Fills density_rate and acceleration of every fluid particle from its neighbours (fluid, wall and,
+/// later, solid particles). Gather form: each particle writes only its own rates.
+///
+/// The densities read are the locally averaged densities rho_bar = porosity * rho of eq. (22); without
+/// grains the porosity is 1 and rho_bar is the particle density.
+template <int Dim>
+void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                         const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters);
+
+extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
+                                            const Kernel<2>&, const FluidRateParameters<2>&);
+extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
+                                            const Kernel<3>&, const FluidRateParameters<3>&);
+
+}  // namespace grit::sph
