@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "grit: error: {}\n", e.what());
         return exit_input_error;
     } catch (const grit::core::BlowUpError& e) {
-        fmt::print(stderr, "\ngrit: {}\n", e.what());
+        fmt::print(stderr, "grit: {}\n", e.what());
         return exit_blow_up;
     } catch (const std::exception& e) {
         fmt::print(stderr, "grit: error: {}\n", e.what());

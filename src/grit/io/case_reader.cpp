@@ -24,9 +24,17 @@ using core::InputError;
 
 std::string repr(const toml::node& node) {
     std::ostringstream os;
+    if (const toml::array* a = node.as_array()) {
+        os << '[';
+        for (std::size_t k = 0; k < a->size(); ++k) os << (k ? ", " : "") << repr((*a)[k]);
+        os << ']';
+        return os.str();
+    }
     node.visit([&](const auto& v) {
         if constexpr (toml::is_string<decltype(v)>)
             os << '"' << v.get() << '"';
+        else if constexpr (toml::is_floating_point<decltype(v)>)
+            os << fmt::format("{}", v.get());
         else
             os << v;
     });
@@ -77,7 +85,7 @@ public:
         return v;
     }
     double number(std::string_view key, const NumberCheck& check = {}) const {
-        if (!has(key)) fail(key, "is required");
+        if (!has(key)) fail(key, required_message());
         return *maybe_number(key, check);
     }
     double number_or(std::string_view key, double fallback, const NumberCheck& check = {}) const {
@@ -98,7 +106,7 @@ public:
         return n->value<std::string>().value();
     }
     std::string text(std::string_view key) const {
-        if (!has(key)) fail(key, "is required");
+        if (!has(key)) fail(key, required_message());
         return *maybe_text(key);
     }
     std::string text_or(std::string_view key, std::string fallback) const {
@@ -176,6 +184,14 @@ public:
     }
 
 private:
+    /// "is required", naming the keys of this table not read so far (a misspelt key is likely one).
+    std::string required_message() const {
+        std::string others;
+        if (table_)
+            for (const auto& [k, v] : *table_)
+                if (!used_->count(key_path(k.str()))) others += (others.empty() ? "" : ", ") + std::string(k.str());
+        return others.empty() ? "is required" : "is required (not recognised here: " + others + ")";
+    }
     const toml::node* node(std::string_view key) const { return table_ ? table_->get(key) : nullptr; }
     const toml::node* take(std::string_view key) const {
         const toml::node* n = node(key);
@@ -191,8 +207,11 @@ private:
 void report_unknown(const toml::table& table, const std::string& prefix, const std::set<std::string>& used) {
     for (const auto& [k, v] : table) {
         const std::string path = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-        if (!used.count(path))
-            throw InputError(fmt::format("key '{}': unknown key (misspelt, or not valid here)", path));
+        if (!used.count(path)) {
+            if (v.is_table())
+                throw InputError(fmt::format("key '{}': unknown key (a table; misspelt, or not valid here)", path));
+            throw InputError(fmt::format("key '{}' = {}: unknown key (misspelt, or not valid here)", path, repr(v)));
+        }
         if (const toml::table* t = v.as_table()) report_unknown(*t, path, used);
         if (const toml::array* a = v.as_array())
             for (std::size_t i = 0; i < a->size(); ++i)

@@ -10,8 +10,10 @@ namespace grit::neighbors {
 template <int Dim>
 template <class F>
 void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x,
-                             Index i, double r2max, F&& visit) const {
+                             Index i, double r2max, const std::int32_t* phase, F&& visit) const {
     const auto c = grid.coords(x[i]);
+    const auto wall = static_cast<std::int32_t>(Phase::wall);
+    const bool skip_walls = phase && phase[i] == wall;
     // Cells are row-major with x fastest, so the three cells x-1..x+1 of one row are one contiguous
     // range of particles: Dim == 2 scans 3 ranges, Dim == 3 scans 9.
     const Index xlo = std::max<Index>(c[0] - 1, 0), xhi = std::min<Index>(c[0] + 1, grid.dims[0] - 1);
@@ -21,7 +23,7 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
         rc[0] = xhi;
         const Index last = cell_start[static_cast<std::size_t>(grid.linear(rc)) + 1];
         for (Index j = first; j < last; ++j) {
-            if (j == i) continue;
+            if (j == i || (skip_walls && phase[j] == wall)) continue;
             if (core::norm2(x[i] - x[j]) < r2max) visit(j);
         }
     };
@@ -37,19 +39,19 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
 
 template <int Dim>
 void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x,
-                              Index n, double radius) {
+                              Index n, double radius, const std::int32_t* phase) {
     const double r2 = radius * radius;
     offsets_.assign(static_cast<std::size_t>(n) + 1, 0);
     parallel::for_each(n, [&](Index i) {
         Index count = 0;
-        scan(grid, cell_start, x, i, r2, [&](Index) { ++count; });
+        scan(grid, cell_start, x, i, r2, phase, [&](Index) { ++count; });
         offsets_[static_cast<std::size_t>(i) + 1] = count;
     });
     for (Index i = 0; i < n; ++i) offsets_[static_cast<std::size_t>(i) + 1] += offsets_[static_cast<std::size_t>(i)];
     indices_.resize(static_cast<std::size_t>(offsets_.back()));
     parallel::for_each(n, [&](Index i) {
         Index k = offsets_[static_cast<std::size_t>(i)];
-        scan(grid, cell_start, x, i, r2, [&](Index j) { indices_[static_cast<std::size_t>(k++)] = j; });
+        scan(grid, cell_start, x, i, r2, phase, [&](Index j) { indices_[static_cast<std::size_t>(k++)] = j; });
     });
     reference_positions_.assign(x, x + n);
 }

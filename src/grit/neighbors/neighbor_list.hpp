@@ -18,8 +18,9 @@ public:
 
     /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (cell_start from
     /// sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin).
+    /// With `phase`, pairs of two fixed wall particles are left out: nothing between them is computed.
     void build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index n,
-               double radius);
+               double radius, const std::int32_t* phase = nullptr);
 
     /// Neighbours of i: indices [begin(i), end(i)) into indices().
     Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
@@ -34,7 +35,7 @@ public:
 private:
     template <class F>
     void scan(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index i,
-              double r2max, F&& visit) const;
+              double r2max, const std::int32_t* phase, F&& visit) const;
 
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;

@@ -67,6 +67,24 @@ T sum(Index n, T zero, F&& f) {
     return total;
 }
 
+/// Reduction of f(i) over [0, n) with `combine`, in fixed blocks combined in a fixed order, so the
+/// result does not depend on the thread count even for non-associative combinations.
+template <class T, class F, class C>
+T reduce(Index n, T identity, F&& f, C&& combine) {
+    const Index blocks = (n + reduction_block - 1) / reduction_block;
+    std::vector<T> partial(static_cast<std::size_t>(blocks), identity);
+#pragma omp parallel for schedule(static)
+    for (Index b = 0; b < blocks; ++b) {
+        T s = identity;
+        const Index end = std::min(n, (b + 1) * reduction_block);
+        for (Index i = b * reduction_block; i < end; ++i) s = combine(s, f(i));
+        partial[static_cast<std::size_t>(b)] = s;
+    }
+    T total = identity;
+    for (const T& s : partial) total = combine(total, s);
+    return total;
+}
+
 /// Maximum of f(i) over [0, n); `lowest` when n == 0. Exact whatever the order.
 template <class F>
 double max(Index n, double lowest, F&& f) {

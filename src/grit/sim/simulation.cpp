@@ -254,7 +254,7 @@ void Simulation<Dim>::update_neighbors(bool force) {
     grid_ = neighbors::CellGrid<Dim>::covering(particles_.position(), n, radius);
     neighbors::sort_by_cell(grid_, particles_.position(), n, order_, cell_start_);
     particles_.gather(order_);
-    neighbors_.build(grid_, cell_start_, particles_.position(), n, radius);
+    neighbors_.build(grid_, cell_start_, particles_.position(), n, radius, particles_.phase());
     neighbors_stale_ = false;
     ++neighbor_builds_;
 }
@@ -271,20 +271,26 @@ void Simulation<Dim>::compute_time_step() {
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     const auto* coef = fluid_parameters_.materials.data();
     const double huge = std::numeric_limits<double>::max();
-    const double cfl = parallel::min(particles_.size(), huge, [&](Index i) {
-        if (ph[i] != fluid) return huge;
-        return h / (coef[mat[i]].sound_speed + core::norm(v[i]));
-    });
-    const double amax2 = parallel::max(particles_.size(), 0.0, [&](Index i) {
-        return ph[i] == fluid ? core::norm2(a[i]) : 0.0;
-    });
-    double dt = spec_.cfl * cfl;
-    if (amax2 > 0.0) dt = std::min(dt, 0.25 * std::sqrt(h / std::sqrt(amax2)));
-    for (const auto& c : fluid_parameters_.materials)
-        if (c.kinematic_viscosity > 0.0) dt = std::min(dt, 0.125 * h * h / c.kinematic_viscosity);
-    if (!std::isfinite(dt) || dt >= huge) {
-        // No fluid yet (an inlet that has not started): step by the inlet's own scale.
+    struct Limits {
+        double cfl, accel2;
+    };
+    const Limits lim = parallel::reduce(
+        particles_.size(), Limits{huge, 0.0},
+        [&](Index i) {
+            if (ph[i] != fluid) return Limits{huge, 0.0};
+            return Limits{h / (coef[mat[i]].sound_speed + core::norm(v[i])), core::norm2(a[i])};
+        },
+        [](Limits x, Limits y) { return Limits{std::min(x.cfl, y.cfl), std::max(x.accel2, y.accel2)}; });
+    const double cfl = lim.cfl, amax2 = lim.accel2;
+    double dt;
+    if (cfl >= huge) {
+        // No fluid yet (an inlet that has not started): step by the fastest speed in the case.
         dt = spec_.cfl * h / max_speed_;
+    } else {
+        dt = spec_.cfl * cfl;
+        if (amax2 > 0.0) dt = std::min(dt, 0.25 * std::sqrt(h / std::sqrt(amax2)));
+        for (const auto& c : fluid_parameters_.materials)
+            if (c.kinematic_viscosity > 0.0) dt = std::min(dt, 0.125 * h * h / c.kinematic_viscosity);
     }
     dt_ = std::min(dt, spec_.max_time_step);
 }
@@ -342,6 +348,7 @@ void Simulation<Dim>::check_health() {
 
 template <int Dim>
 void Simulation<Dim>::prime() {
+    primed_ = true;
     update_neighbors(true);
     pipeline_.run_only({"equation_of_state", "wall_pressure", "sph_fluid", "time_step"});
     // The first step recomputes these rates at the same state; prime only sizes the first dt.
@@ -359,8 +366,25 @@ void Simulation<Dim>::step() {
 }
 
 template <int Dim>
+void Simulation<Dim>::advance_to(double target, const std::function<void()>& after_each_step) {
+    if (!primed_) prime();
+    while (time_ < target * (1.0 - 1e-12)) {
+        if (time_ + dt_ > target) dt_ = target - time_;  // land exactly on the target time
+        step();
+        if (after_each_step) after_each_step();
+    }
+}
+
+template <int Dim>
 double Simulation<Dim>::probe(std::size_t k) const {
     return analysis::evaluate_probe(spec_.probes[k], particles_, kernel_, spacing_);
+}
+
+template <int Dim>
+double Simulation<Dim>::probe(const std::string& name) const {
+    for (std::size_t k = 0; k < spec_.probes.size(); ++k)
+        if (spec_.probes[k].name == name) return probe(k);
+    throw std::out_of_range("no probe named '" + name + "'");
 }
 
 template <int Dim>
@@ -455,15 +479,9 @@ RunSummary Simulation<Dim>::run() {
         next_output_ = spec_.output_interval;
         const double end = spec_.end_time;
         while (time_ < end * (1.0 - 1e-12)) {
-            // Land exactly on output times and on the end time.
-            const double target = std::min(end, next_output_);
-            if (time_ + dt_ > target) dt_ = target - time_;
-            step();
-            if (time_ >= next_output_ * (1.0 - 1e-12) || time_ >= end * (1.0 - 1e-12)) {
-                write_output();
-                while (next_output_ <= time_ * (1.0 + 1e-12)) next_output_ += spec_.output_interval;
-            }
-            progress.update(time_, end, step_);
+            advance_to(std::min(end, next_output_), [&] { progress.update(time_, end, step_); });
+            write_output();
+            while (next_output_ <= time_ * (1.0 + 1e-12)) next_output_ += spec_.output_interval;
         }
         progress.update(time_, end, step_, true);
         progress.finish();

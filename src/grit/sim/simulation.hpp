@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,8 @@ public:
 
     /// Advances one time step (public for tests and benchmarks).
     void step();
+    /// Steps until time() reaches `target` exactly (primes the rates first if needed).
+    void advance_to(double target, const std::function<void()>& after_each_step = {});
     /// Computes the rates of the current state (before the first step).
     void prime();
 
@@ -67,6 +70,9 @@ public:
     const Pipeline& pipeline() const { return pipeline_; }
     std::size_t pair_count() const { return neighbors_.pair_count(); }
     double probe(std::size_t k) const;
+    /// Value of the probe named `name` now (throws std::out_of_range if there is none).
+    double probe(const std::string& name) const;
+    const io::CaseSpec& spec() const { return spec_; }
 
 private:
     void build_particles();
@@ -97,6 +103,7 @@ private:
     neighbors::NeighborList<Dim> neighbors_;
     std::vector<Index> order_, cell_start_;
     bool neighbors_stale_ = true;
+    bool primed_ = false;
     long neighbor_builds_ = 0;
 
     Pipeline pipeline_;

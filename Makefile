@@ -1,0 +1,37 @@
+# grit's front door. `make demo` and `make test` work on a fresh Debian machine.
+BUILD ?= build
+SANITIZE_BUILD ?= build-sanitize
+JOBS ?= $(shell nproc)
+CTEST_ARGS ?=
+
+.PHONY: all deps configure build test test-sanitize demo bench clean
+
+all: build
+
+deps:
+	bash scripts/install_deps.sh
+
+configure: deps
+	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	ctest --test-dir $(BUILD) --output-on-failure -j 1 $(CTEST_ARGS)
+
+# Unit tests under AddressSanitizer and UndefinedBehaviorSanitizer.
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -L unit -j $(JOBS)
+
+demo: build
+	./$(BUILD)/grit run cases/demo.toml --out output/demo
+
+bench: build
+	./$(BUILD)/grit_bench --benchmark_counters_tabular=true
+
+clean:
+	rm -rf $(BUILD) $(SANITIZE_BUILD) output

@@ -1,0 +1,299 @@
+#!/usr/bin/env bash
+# CLI tests of grit: exit codes and one-line messages for bad input, the files of a run, VTK-readable
+# output, identical results with 1 and 2 threads, and a reported blow-up.
+#
+# Usage: bash tests/cli/test_cli.sh <path-to-grit> <repo-root> [<python3-with-vtk>]
+# Works from any current directory. Prints one line per check and a final "N passed, M failed".
+set -euo pipefail
+
+if [[ $# -lt 2 ]]; then
+    echo "usage: $0 <path-to-grit> <repo-root> [<python3-with-vtk>]" >&2
+    exit 2
+fi
+GRIT=$(realpath -- "$1")
+ROOT=$(realpath -- "$2")
+PY=${3:-}
+if [[ ! -x $GRIT ]]; then
+    echo "error: $GRIT is not an executable" >&2
+    exit 2
+fi
+if [[ ! -d $ROOT/cases ]]; then
+    echo "error: $ROOT is not the grit repository root (no cases/)" >&2
+    exit 2
+fi
+
+W=$(mktemp -d "${TMPDIR:-/tmp}/grit_cli.XXXXXX")
+trap 'rm -rf -- "$W"' EXIT
+cd "$W"  # nothing below depends on the caller's directory
+
+HYDRO=$ROOT/cases/hydrostatic_2d/case.toml
+JET=$ROOT/cases/jet_on_wall_2d/case.toml
+CHECKER=$ROOT/tests/unit/io/check_vtu_with_vtk.py
+ARRAYS=(velocity density pressure mass phase)
+
+passed=0
+failed=0
+failures=()
+pass() { echo "PASS: $1"; passed=$((passed + 1)); }
+fail() {
+    echo "FAIL: $1${2:+ -- $2}"
+    failed=$((failed + 1))
+    failures+=("$1")
+}
+skip() { echo "SKIPPED: $1 ($2)"; }
+
+# A python able to run the VTK checker, and one able to parse JSON (any python3).
+HAVE_VTK=0
+VTK_WHY="no python given"
+if [[ -n $PY ]]; then
+    if [[ -x $PY ]] && "$PY" -c 'import vtk' >/dev/null 2>&1; then
+        HAVE_VTK=1
+    else
+        VTK_WHY="$PY cannot import vtk"
+    fi
+fi
+JSON_PY=""
+if [[ -n $PY && -x $PY ]]; then
+    JSON_PY=$PY
+elif command -v python3 >/dev/null 2>&1; then
+    JSON_PY=$(command -v python3)
+fi
+
+# Runs grit with the given arguments; sets RC and leaves stdout/stderr in $W/stdout, $W/stderr.
+RC=0
+grit() {
+    RC=0
+    "$GRIT" "$@" >"$W/stdout" 2>"$W/stderr" || RC=$?
+}
+
+# Runs the VTK checker on the arguments; sets VTK_RC and VTK_OUT.
+VTK_RC=0
+VTK_OUT=""
+vtk_check() {
+    VTK_RC=0
+    VTK_OUT=$("$PY" "$CHECKER" "$@" 2>&1) || VTK_RC=$?
+}
+
+# expect_input_error NAME PATTERN... -- GRIT-ARGS...: grit must exit 2, print exactly one stderr line
+# "grit: error: ..." containing every PATTERN, and leave $W/bad uncreated.
+expect_input_error() {
+    local name=$1
+    shift
+    local patterns=()
+    while [[ $1 != -- ]]; do
+        patterns+=("$1")
+        shift
+    done
+    shift
+    rm -rf -- "$W/bad"
+    grit "$@" --out "$W/bad"
+    local err lines why=""
+    err=$(cat "$W/stderr")
+    lines=$(grep -c '' "$W/stderr" || true)
+    if [[ $RC -ne 2 ]]; then
+        why="exit code $RC, expected 2"
+    elif [[ $lines -ne 1 ]]; then
+        why="$lines lines on stderr, expected 1"
+    elif [[ $err != "grit: error: "* ]]; then
+        why="stderr does not start with 'grit: error: '"
+    elif [[ -e $W/bad ]]; then
+        why="the output folder was created"
+    else
+        local p
+        for p in "${patterns[@]}"; do
+            if ! grep -qF -- "$p" "$W/stderr"; then
+                why="'$p' missing from stderr"
+                break
+            fi
+        done
+    fi
+    if [[ -z $why ]]; then
+        pass "bad input: $name -> exit 2: $err"
+    else
+        fail "bad input: $name" "$why; stderr: $err"
+    fi
+    rm -rf -- "$W/bad"
+}
+
+# --- the material library and a valid case ---------------------------------------------------------
+
+grit materials
+if [[ $RC -eq 0 ]] && grep -qx 'water' "$W/stdout"; then
+    pass "grit materials exits 0 and lists water"
+else
+    fail "grit materials exits 0 and lists water" "exit $RC"
+fi
+
+grit check "$HYDRO"
+if [[ $RC -eq 0 ]]; then
+    pass "grit check cases/hydrostatic_2d/case.toml exits 0"
+else
+    fail "grit check cases/hydrostatic_2d/case.toml exits 0" "exit $RC: $(cat "$W/stderr")"
+fi
+
+# --- bad input: exit code 2, one line naming the key (or file) and the reason, nothing written --------
+
+sed 's/^smoothing_ratio *=/smoothing_ratoi =/' "$HYDRO" >"$W/typo.toml"
+expect_input_error "unknown key in the file" "numerics.smoothing_ratoi" "unknown key" -- run "$W/typo.toml"
+expect_input_error "unknown key through --set" "numerics.particle_spacng" "unknown key" -- \
+    run "$HYDRO" --set numerics.particle_spacng=0.02
+expect_input_error "negative spacing" "numerics.particle_spacing" "-0.01" "must be positive" -- \
+    run "$HYDRO" --set numerics.particle_spacing=-0.01
+expect_input_error "unknown material" "fluid[0].material" "unobtainium" "unknown material" -- \
+    run "$HYDRO" --set 'fluid[0].material=unobtainium'
+expect_input_error "unknown kernel" "numerics.kernel" "gauss" "must be one of" -- \
+    run "$HYDRO" --set numerics.kernel=gauss
+expect_input_error "3 numbers in a 2D case" "physics.gravity" "must be an array of 2 numbers" -- \
+    run "$HYDRO" --set 'physics.gravity=[0.0, -9.81, 0.0]'
+expect_input_error "missing file" "$W/no_such_case.toml" "no such file" -- run "$W/no_such_case.toml"
+printf '# line 1\n\n[time\nend = 1.0\n' >"$W/malformed.toml"
+expect_input_error "malformed TOML" "$W/malformed.toml" "line 3" "malformed TOML" -- run "$W/malformed.toml"
+expect_input_error "spacing larger than the geometry" "fluid[0].max" "less than numerics.particle_spacing" -- \
+    run "$HYDRO" --set numerics.particle_spacing=1.0
+expect_input_error "negative --end-time" "--end-time" "must not be negative" -- run "$HYDRO" --end-time -1
+expect_input_error "--set without '='" "--set 'time.end'" "key.path=value" -- run "$HYDRO" --set time.end
+
+# --- a zero-length run: the files it writes ----------------------------------------------------------
+
+T0=$W/t0
+grit run "$HYDRO" --end-time 0 --out "$T0" --quiet
+if [[ $RC -eq 0 ]]; then
+    pass "run --end-time 0 exits 0"
+else
+    fail "run --end-time 0 exits 0" "exit $RC: $(cat "$W/stderr")"
+fi
+
+if [[ -f $T0/hydrostatic_2d.pvd ]]; then
+    pass "t0: hydrostatic_2d.pvd written"
+else
+    fail "t0: hydrostatic_2d.pvd written"
+fi
+
+shopt -s nullglob
+vtus=("$T0"/snapshots/*.vtu)
+if [[ ${#vtus[@]} -eq 1 ]]; then
+    pass "t0: exactly one snapshots/*.vtu"
+else
+    fail "t0: exactly one snapshots/*.vtu" "found ${#vtus[@]}"
+fi
+
+HEADER='time,step,dt,kinetic_energy,mass_total,mass_in,mass_out,max_velocity'
+if [[ -f $T0/series.csv ]] && [[ $(head -n 1 "$T0/series.csv") == "$HEADER"* ]] &&
+    [[ $(grep -c '' "$T0/series.csv") -eq 2 ]]; then
+    pass "t0: series.csv has the header and one data row"
+else
+    fail "t0: series.csv has the header and one data row" \
+        "$( [[ -f $T0/series.csv ]] && head -n 3 "$T0/series.csv" | tr '\n' '|' || echo missing)"
+fi
+
+KEYS=(particles steps wall_time_s particle_steps_per_second end_time)
+if [[ ! -f $T0/summary.json ]]; then
+    fail "t0: summary.json has the run's keys" "missing"
+elif [[ -n $JSON_PY ]]; then
+    json_rc=0
+    json_out=$("$JSON_PY" -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+missing = [k for k in sys.argv[2:] if k not in d]
+if missing:
+    sys.exit("missing keys: " + ", ".join(missing))
+if d["steps"] != 0 or d["end_time"] != 0 or d["particles"] <= 0:
+    sys.exit("unexpected values: steps=%r end_time=%r particles=%r" % (d["steps"], d["end_time"], d["particles"]))
+' "$T0/summary.json" "${KEYS[@]}" 2>&1) || json_rc=$?
+    if [[ $json_rc -eq 0 ]]; then
+        pass "t0: summary.json has the run's keys"
+    else
+        fail "t0: summary.json has the run's keys" "$json_out"
+    fi
+else
+    missing=""
+    for k in "${KEYS[@]}"; do grep -q "\"$k\"" "$T0/summary.json" || missing+=" $k"; done
+    if [[ -z $missing ]]; then
+        pass "t0: summary.json has the run's keys (grep; no python)"
+    else
+        fail "t0: summary.json has the run's keys" "missing:$missing"
+    fi
+fi
+
+if [[ $HAVE_VTK -eq 1 ]]; then
+    vtk_check --pvd "$T0/hydrostatic_2d.pvd" "${ARRAYS[@]}"
+    if [[ $VTK_RC -eq 0 ]]; then
+        pass "t0: VTK reads the .pvd and its .vtu"
+    else
+        fail "t0: VTK reads the .pvd and its .vtu" "$VTK_OUT"
+    fi
+else
+    skip "t0: VTK reads the .pvd and its .vtu" "$VTK_WHY"
+fi
+
+# --- determinism: 1 and 2 threads give the same bytes ------------------------------------------------
+
+jet_ok=1
+for t in 1 2; do
+    grit run "$JET" --set time.end=2e-5 --set output.interval=1e-5 --quiet --threads "$t" --out "$W/jet$t"
+    if [[ $RC -ne 0 ]]; then
+        jet_ok=0
+        fail "jet_on_wall_2d with --threads $t exits 0" "exit $RC: $(cat "$W/stderr")"
+    fi
+done
+if [[ $jet_ok -eq 1 ]]; then
+    if cmp -s "$W/jet1/series.csv" "$W/jet2/series.csv"; then
+        pass "threads 1 vs 2: series.csv byte-identical"
+    else
+        fail "threads 1 vs 2: series.csv byte-identical" "$(cmp "$W/jet1/series.csv" "$W/jet2/series.csv" 2>&1 || true)"
+    fi
+    snaps1=("$W"/jet1/snapshots/*.vtu)
+    snaps2=("$W"/jet2/snapshots/*.vtu)
+    if [[ ${#snaps1[@]} -lt 2 || ${#snaps1[@]} -ne ${#snaps2[@]} ]]; then
+        fail "threads 1 vs 2: last snapshot byte-identical" "${#snaps1[@]} vs ${#snaps2[@]} snapshots"
+    else
+        last1=${snaps1[-1]}
+        last2=$W/jet2/snapshots/$(basename -- "$last1")
+        if cmp -s "$last1" "$last2"; then
+            pass "threads 1 vs 2: last snapshot $(basename -- "$last1") byte-identical"
+        else
+            fail "threads 1 vs 2: last snapshot byte-identical" "$(cmp "$last1" "$last2" 2>&1 || true)"
+        fi
+    fi
+fi
+
+# --- a blow-up: exit 3, a message naming the step and the particle, a readable last good state --------
+
+BU=$W/blowup
+grit run "$HYDRO" --set time.cfl=1.0 --set numerics.density_diffusion=0 \
+    --set materials.tank_water.artificial_viscosity_alpha=0 \
+    --set materials.tank_water.artificial_viscosity_beta=0 --end-time 2 --out "$BU" --quiet
+if [[ $RC -eq 3 ]]; then
+    pass "blow-up exits 3"
+else
+    fail "blow-up exits 3" "exit $RC"
+fi
+if grep 'blow-up at step' "$W/stderr" | grep -q 'particle'; then
+    pass "blow-up: stderr names the step and the particle"
+else
+    fail "blow-up: stderr names the step and the particle" "stderr: $(cat "$W/stderr")"
+fi
+last_good=("$BU"/snapshots/*last_good*.vtu)
+if [[ ${#last_good[@]} -eq 1 ]]; then
+    pass "blow-up: $(basename -- "${last_good[0]}") written"
+    if [[ $HAVE_VTK -eq 1 ]]; then
+        vtk_check "${last_good[0]}" "${ARRAYS[@]}"
+        if [[ $VTK_RC -eq 0 ]]; then
+            pass "blow-up: VTK reads the last good state"
+        else
+            fail "blow-up: VTK reads the last good state" "$VTK_OUT"
+        fi
+    else
+        skip "blow-up: VTK reads the last good state" "$VTK_WHY"
+    fi
+else
+    fail "blow-up: one snapshots/*last_good*.vtu written" "found ${#last_good[@]}"
+fi
+
+# --- summary --------------------------------------------------------------------------------------------
+
+echo "$passed passed, $failed failed"
+if [[ $failed -ne 0 ]]; then
+    printf 'failed: %s\n' "${failures[@]}"
+    exit 1
+fi

@@ -1,0 +1,468 @@
+// Unit tests of the case reader: every shipped case reads, a minimal case gives the expected CaseSpec,
+// --set overrides take effect, and every bad input throws InputError naming the key, the value and why.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "grit/core/error.hpp"
+#include "grit/core/types.hpp"
+#include "grit/io/case_reader.hpp"
+#include "grit/io/case_spec.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using grit::core::InputError;
+using grit::io::CaseSpec;
+using grit::io::read_case;
+using Overrides = std::vector<std::string>;
+
+/// A small, valid 2D case: one fluid box of a case-defined material, a tank, two probes.
+const std::string minimal_2d = R"(# minimal 2D case
+[simulation]
+title = "minimal"
+dimension = 2
+
+[time]
+end = 0.5
+
+[output]
+interval = 0.125
+
+[numerics]
+particle_spacing = 0.015625
+
+[physics]
+gravity = [0.0, -9.75]
+
+[materials.my_water]
+base = "water_tait"
+sound_speed = 25.0
+
+[[fluid]]
+shape = "box"
+min = [0.0, 0.0]
+max = [0.25, 0.125]
+material = "my_water"
+
+[[wall]]
+shape = "tank"
+min = [0.0, 0.0]
+max = [0.5, 0.25]
+layers = 2
+
+[domain]
+min = [-0.125, -0.125]
+max = [0.625, 0.5]
+
+[[probe]]
+name = "p_bottom"
+position = [0.125, 0.0625]
+
+[[probe]]
+name = "front"
+kind = "front"
+axis = "x"
+)";
+
+/// `text` with the first occurrence of `from` replaced by `to`; `from` must occur.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not in the case text");
+    text.replace(at, from.size(), to);
+    return text;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+/// A fresh, uniquely named directory per test, removed afterwards.
+class CaseReaderTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        std::random_device rd;
+        const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+        for (int attempt = 0; attempt < 100; ++attempt) {
+            dir_ = fs::temp_directory_path() / (std::string("grit_case_reader_") + info->name() + "_" +
+                                                std::to_string(stamp) + "_" + std::to_string(rd()));
+            if (fs::create_directory(dir_)) return;
+        }
+        FAIL() << "could not create a fresh temporary directory";
+    }
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(dir_, ec);
+    }
+
+    /// Writes `text` to dir_/`name` and returns its path.
+    fs::path write(const std::string& text, const std::string& name = "case.toml") const {
+        const fs::path p = dir_ / name;
+        std::ofstream out(p, std::ios::binary);
+        out << text;
+        return p;
+    }
+
+    /// Reads `text` (written as a case file); fails the test on any exception.
+    CaseSpec read_ok(const std::string& text, const Overrides& overrides = {}) const {
+        try {
+            return read_case(write(text), overrides);
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "unexpected exception: " << e.what();
+        }
+        return {};
+    }
+
+    /// Expects read_case on `file` to throw InputError whose message contains every one of `parts`.
+    static void expect_error_file(const fs::path& file, const Overrides& overrides, const std::vector<std::string>& parts) {
+        try {
+            (void)read_case(file, overrides);
+            ADD_FAILURE() << "no InputError thrown; expected a message with '" << parts.front() << "'";
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            for (const auto& part : parts) EXPECT_TRUE(contains(what, part)) << "'" << part << "' missing in: " << what;
+            EXPECT_FALSE(contains(what, "\n")) << "the message should be one line: " << what;
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "expected InputError, got another exception: " << e.what();
+        }
+    }
+    void expect_error(const std::string& text, const Overrides& overrides, const std::vector<std::string>& parts) const {
+        expect_error_file(write(text), overrides, parts);
+    }
+
+    fs::path dir_;
+};
+
+// ---------------------------------------------------------------------------------------------------
+// The shipped cases
+
+TEST_F(CaseReaderTest, EveryShippedCaseReads) {
+    const fs::path cases = fs::path(GRIT_SOURCE_DIR) / "cases";
+    ASSERT_TRUE(fs::is_directory(cases)) << cases;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(cases)) {
+        if (e.is_directory() && fs::exists(e.path() / "case.toml")) files.push_back(e.path() / "case.toml");
+        if (e.is_regular_file() && e.path().extension() == ".toml") files.push_back(e.path());  // e.g. demo.toml
+    }
+    std::sort(files.begin(), files.end());
+    EXPECT_GE(files.size(), 4u) << "expected at least hydrostatic_2d/3d, dambreak_2d and jet_on_wall_2d";
+    for (const auto& f : files) {
+        SCOPED_TRACE(f.string());
+        try {
+            const CaseSpec c = read_case(f);
+            const std::string expected_name =
+                f.filename() == "case.toml" ? f.parent_path().filename().string() : f.stem().string();
+            EXPECT_EQ(c.name, expected_name);
+            EXPECT_TRUE(c.dimension == 2 || c.dimension == 3);
+            EXPECT_GT(c.particle_spacing, 0.0);
+            EXPECT_GT(c.output_interval, 0.0);
+            EXPECT_EQ(c.gravity.size(), static_cast<std::size_t>(c.dimension));
+            EXPECT_FALSE(c.materials.empty());
+            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty());
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << f << ": " << e.what();
+        }
+    }
+}
+
+TEST_F(CaseReaderTest, ShippedCaseAcceptsZeroEndTimeOverride) {
+    const fs::path f = fs::path(GRIT_SOURCE_DIR) / "cases" / "hydrostatic_2d" / "case.toml";
+    if (!fs::exists(f)) GTEST_SKIP() << f << " not present";
+    const CaseSpec c = read_case(f, {"time.end=0"});
+    EXPECT_EQ(c.end_time, 0.0);
+    EXPECT_EQ(c.name, "hydrostatic_2d");
+}
+
+// ---------------------------------------------------------------------------------------------------
+// A valid minimal case
+
+TEST_F(CaseReaderTest, MinimalCaseGivesExpectedSpec) {
+    const CaseSpec c = read_ok(minimal_2d);
+    EXPECT_EQ(c.source, dir_ / "case.toml");
+    EXPECT_EQ(c.name, dir_.filename().string());  // "case.toml" takes its folder's name
+    EXPECT_EQ(c.title, "minimal");
+    EXPECT_EQ(c.dimension, 2);
+    EXPECT_DOUBLE_EQ(c.end_time, 0.5);
+    EXPECT_DOUBLE_EQ(c.output_interval, 0.125);
+    EXPECT_TRUE(c.write_snapshots);
+    EXPECT_DOUBLE_EQ(c.particle_spacing, 0.015625);
+    ASSERT_EQ(c.gravity.size(), 2u);
+    EXPECT_DOUBLE_EQ(c.gravity[0], 0.0);
+    EXPECT_DOUBLE_EQ(c.gravity[1], -9.75);
+
+    // Defaults.
+    EXPECT_DOUBLE_EQ(c.cfl, 0.2);
+    EXPECT_DOUBLE_EQ(c.smoothing_ratio, 1.25);
+    EXPECT_EQ(c.kernel, "cubic_spline");
+    EXPECT_DOUBLE_EQ(c.density_diffusion, 0.1);
+    EXPECT_FALSE(c.remove_leaving);
+
+    // The material: its index and the EOS sound speed overriding the library's.
+    ASSERT_EQ(c.materials.size(), 1u);
+    EXPECT_EQ(c.materials[0].name, "my_water");
+    EXPECT_EQ(c.materials[0].phase, grit::Phase::fluid);
+    EXPECT_DOUBLE_EQ(c.materials[0].sound_speed(), 25.0);
+    EXPECT_DOUBLE_EQ(c.materials[0].reference_density(), 1000.0);
+
+    ASSERT_EQ(c.fluids.size(), 1u);
+    EXPECT_EQ(c.fluids[0].key, "fluid[0]");
+    EXPECT_EQ(c.fluids[0].shape.kind, "box");
+    EXPECT_EQ(c.fluids[0].shape.min, (std::vector<double>{0.0, 0.0}));
+    EXPECT_EQ(c.fluids[0].shape.max, (std::vector<double>{0.25, 0.125}));
+    EXPECT_EQ(c.fluids[0].material, 0);
+    EXPECT_EQ(c.fluids[0].velocity, (std::vector<double>{0.0, 0.0}));
+    EXPECT_FALSE(c.fluids[0].hydrostatic);
+
+    ASSERT_EQ(c.walls.size(), 1u);
+    EXPECT_EQ(c.walls[0].shape.kind, "tank");
+    EXPECT_EQ(c.walls[0].shape.layers, 2);
+    EXPECT_EQ(c.walls[0].shape.open, (std::vector<std::string>{"top"}));
+    EXPECT_EQ(c.walls[0].material, 0);  // walls default to the first fluid's material
+
+    EXPECT_EQ(c.domain_min, (std::vector<double>{-0.125, -0.125}));
+    EXPECT_EQ(c.domain_max, (std::vector<double>{0.625, 0.5}));
+
+    ASSERT_EQ(c.probes.size(), 2u);
+    EXPECT_EQ(c.probes[0].name, "p_bottom");
+    EXPECT_EQ(c.probes[0].kind, "point");
+    EXPECT_EQ(c.probes[0].quantity, "pressure");
+    EXPECT_EQ(c.probes[0].position, (std::vector<double>{0.125, 0.0625}));
+    EXPECT_EQ(c.probes[1].name, "front");
+    EXPECT_EQ(c.probes[1].kind, "front");
+    EXPECT_EQ(c.probes[1].axis, 0);
+    EXPECT_FALSE(c.probes[1].has_region);
+}
+
+TEST_F(CaseReaderTest, NameComesFromTheFileStemUnlessCaseToml) {
+    const CaseSpec c = read_case(write(minimal_2d, "my_run.toml"));
+    EXPECT_EQ(c.name, "my_run");
+}
+
+TEST_F(CaseReaderTest, LibraryMaterialByNameAndZeroEndTime) {
+    std::string text = replaced(minimal_2d, "material = \"my_water\"", "material = \"water\"");
+    text = replaced(text, "end = 0.5", "end = 0.0");
+    const CaseSpec c = read_ok(text);
+    EXPECT_EQ(c.end_time, 0.0);  // zero end time writes the initial state only: allowed
+    // "my_water" is defined but unused; only materials in use are listed.
+    ASSERT_EQ(c.materials.size(), 1u);
+    EXPECT_EQ(c.materials[0].name, "water");
+    EXPECT_DOUBLE_EQ(c.materials[0].sound_speed(), 1480.0);
+}
+
+TEST_F(CaseReaderTest, ThreeDimensionalCase) {
+    const std::string text = R"(
+[simulation]
+dimension = 3
+[time]
+end = 0.1
+[output]
+interval = 0.05
+[numerics]
+particle_spacing = 0.0625
+kernel = "wendland_c2"
+[physics]
+gravity = [0.0, 0.0, -9.81]
+[[fluid]]
+shape = "sphere"
+center = [0.5, 0.5, 0.5]
+radius = 0.25
+velocity = [1.0, 2.0, 3.0]
+[domain]
+min = [0.0, 0.0, 0.0]
+max = [1.0, 1.0, 1.0]
+on_exit = "remove"
+)";
+    const CaseSpec c = read_ok(text);
+    EXPECT_EQ(c.dimension, 3);
+    EXPECT_EQ(c.kernel, "wendland_c2");
+    EXPECT_TRUE(c.remove_leaving);
+    ASSERT_EQ(c.fluids.size(), 1u);
+    EXPECT_EQ(c.fluids[0].shape.kind, "disc");  // "sphere" is the 3D name of a disc
+    EXPECT_DOUBLE_EQ(c.fluids[0].shape.radius, 0.25);
+    EXPECT_EQ(c.fluids[0].velocity, (std::vector<double>{1.0, 2.0, 3.0}));
+    ASSERT_EQ(c.materials.size(), 1u);
+    EXPECT_EQ(c.materials[0].name, "water");  // the default material
+}
+
+// ---------------------------------------------------------------------------------------------------
+// --set overrides
+
+TEST_F(CaseReaderTest, OverrideReplacesANumber) {
+    const CaseSpec c = read_ok(minimal_2d, {"numerics.particle_spacing=0.02"});
+    EXPECT_DOUBLE_EQ(c.particle_spacing, 0.02);
+}
+
+TEST_F(CaseReaderTest, OverrideTrimsSpacesAndTheLastOneWins) {
+    const CaseSpec c = read_ok(minimal_2d, {" time.end = 0.25 ", "time.end=0.375"});
+    EXPECT_DOUBLE_EQ(c.end_time, 0.375);
+}
+
+TEST_F(CaseReaderTest, OverrideCreatesNestedNewKeys) {
+    // A new material defined entirely from the command line; a bare word is a string.
+    const CaseSpec c =
+        read_ok(minimal_2d, {"materials.foo.base=water_tait", "materials.foo.sound_speed=30", "fluid[0].material=foo"});
+    ASSERT_EQ(c.materials.size(), 1u);
+    EXPECT_EQ(c.materials[0].name, "foo");
+    EXPECT_DOUBLE_EQ(c.materials[0].sound_speed(), 30.0);
+    EXPECT_EQ(c.fluids[0].material, 0);
+}
+
+TEST_F(CaseReaderTest, OverrideChangesAMaterialOfTheCase) {
+    const CaseSpec c = read_ok(minimal_2d, {"materials.my_water.sound_speed=40.5"});
+    ASSERT_EQ(c.materials.size(), 1u);
+    EXPECT_DOUBLE_EQ(c.materials[0].sound_speed(), 40.5);
+}
+
+TEST_F(CaseReaderTest, OverrideIndexedTableAndArrayValue) {
+    const CaseSpec c = read_ok(minimal_2d, {"fluid[0].velocity=[1.0, 0.0]"});
+    ASSERT_EQ(c.fluids.size(), 1u);
+    EXPECT_EQ(c.fluids[0].velocity, (std::vector<double>{1.0, 0.0}));
+}
+
+TEST_F(CaseReaderTest, OverrideBareWordBecomesAString) {
+    const CaseSpec c = read_ok(minimal_2d, {"numerics.kernel=wendland_c2", "simulation.title=a bare title"});
+    EXPECT_EQ(c.kernel, "wendland_c2");
+    EXPECT_EQ(c.title, "a bare title");
+    const CaseSpec q = read_ok(minimal_2d, {"numerics.kernel=\"wendland_c2\""});
+    EXPECT_EQ(q.kernel, "wendland_c2");
+}
+
+TEST_F(CaseReaderTest, OverrideBooleanAndInteger) {
+    const CaseSpec c = read_ok(minimal_2d, {"output.snapshots=false", "numerics.check_interval=7"});
+    EXPECT_FALSE(c.write_snapshots);
+    EXPECT_EQ(c.check_interval, 7);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Bad input: InputError naming the key (or file), the value and the reason
+
+TEST_F(CaseReaderTest, UnknownTopLevelKey) {
+    expect_error(minimal_2d + "\n[solver]\niterations = 3\n", {}, {"'solver'", "unknown key"});
+    expect_error("speed = 3\n" + minimal_2d, {}, {"'speed'", "unknown key"});
+}
+
+TEST_F(CaseReaderTest, UnknownNestedKey) {
+    // A misspelt optional key next to the right ones.
+    expect_error(replaced(minimal_2d, "particle_spacing = 0.015625", "particle_spacing = 0.015625\nsmoothing_ratoi = 1.3"),
+                 {}, {"numerics.smoothing_ratoi", "unknown key"});
+    // The same typo through --set.
+    expect_error(minimal_2d, {"numerics.particle_spacng=0.02"}, {"numerics.particle_spacng", "unknown key"});
+    // Misspelt keys inside arrays of tables are found too.
+    expect_error(replaced(minimal_2d, "layers = 2", "layers = 2\nlayer = 3"), {}, {"wall[0].layer", "unknown key"});
+}
+
+TEST_F(CaseReaderTest, MisspeltRequiredKeyIsReportedAsMissing) {
+    // The required key is read (and found missing) before unknown keys are reported.
+    expect_error(replaced(minimal_2d, "particle_spacing =", "particle_spacng ="), {},
+                 {"numerics.particle_spacing", "required"});
+}
+
+TEST_F(CaseReaderTest, WrongType) {
+    expect_error(replaced(minimal_2d, "particle_spacing = 0.015625", "particle_spacing = \"0.01\""), {},
+                 {"numerics.particle_spacing", "\"0.01\"", "must be a number"});
+    expect_error(minimal_2d, {"time.end=soon"}, {"time.end", "\"soon\"", "must be a number"});
+    expect_error(minimal_2d, {"output.snapshots=1"}, {"output.snapshots", "1", "true or false"});
+    expect_error(minimal_2d, {"simulation.dimension=2.5"}, {"simulation.dimension", "2.5", "integer"});
+}
+
+TEST_F(CaseReaderTest, NegativeSpacing) {
+    expect_error(replaced(minimal_2d, "particle_spacing = 0.015625", "particle_spacing = -0.01"), {},
+                 {"numerics.particle_spacing", "-0.01", "must be positive"});
+    expect_error(minimal_2d, {"numerics.particle_spacing=0"}, {"numerics.particle_spacing", "0", "must be positive"});
+}
+
+TEST_F(CaseReaderTest, NegativeEndTimeRejectedZeroAllowed) {
+    EXPECT_EQ(read_ok(minimal_2d, {"time.end=0"}).end_time, 0.0);
+    expect_error(replaced(minimal_2d, "end = 0.5", "end = -1.5"), {}, {"time.end", "-1.5", "must not be negative"});
+    expect_error(minimal_2d, {"time.end=-1"}, {"time.end", "-1", "must not be negative"});
+}
+
+TEST_F(CaseReaderTest, OutOfRangeValues) {
+    expect_error(minimal_2d, {"time.cfl=1.5"}, {"time.cfl", "1.5", "must lie in"});
+    expect_error(minimal_2d, {"simulation.dimension=4"}, {"simulation.dimension", "4", "must lie in [2, 3]"});
+    expect_error(minimal_2d, {"output.interval=0"}, {"output.interval", "0", "must be positive"});
+    expect_error(minimal_2d, {"time.end=nan"}, {"time.end", "nan", "finite"});
+}
+
+TEST_F(CaseReaderTest, BoxMaxNotAboveMin) {
+    expect_error(replaced(minimal_2d, "max = [0.25, 0.125]", "max = [0.25, 0.0]"), {},
+                 {"fluid[0].max", "0.25", "must exceed min in y"});
+    expect_error(minimal_2d, {"wall[0].max=[-0.5, 0.25]"}, {"wall[0].max", "-0.5", "must exceed min in x"});
+    expect_error(minimal_2d, {"domain.max=[0.625, -0.25]"}, {"domain.max", "-0.25", "must exceed"});
+}
+
+TEST_F(CaseReaderTest, BoxSmallerThanSpacing) {
+    // The spacing is larger than the fluid box.
+    expect_error(minimal_2d, {"numerics.particle_spacing=0.5"},
+                 {"fluid[0].max", "0.25", "less than numerics.particle_spacing", "0.5"});
+    expect_error(replaced(minimal_2d, "max = [0.25, 0.125]", "max = [0.25, 0.0078125]"), {},
+                 {"fluid[0].max", "0.0078125", "wide in y", "less than numerics.particle_spacing"});
+}
+
+TEST_F(CaseReaderTest, UnknownMaterial) {
+    expect_error(replaced(minimal_2d, "material = \"my_water\"", "material = \"unobtainium\""), {},
+                 {"fluid[0].material", "\"unobtainium\"", "unknown material", "water_tait", "my_water"});
+    expect_error(minimal_2d, {"materials.my_water.base=lava"}, {"materials.my_water.base", "\"lava\"", "unknown"});
+    // A new material with neither a base nor an EOS.
+    expect_error(minimal_2d, {"materials.foo.sound_speed=30", "fluid[0].material=foo"}, {"materials.foo.eos", "required"});
+}
+
+TEST_F(CaseReaderTest, UnknownKernel) {
+    expect_error(replaced(minimal_2d, "particle_spacing = 0.015625", "particle_spacing = 0.015625\nkernel = \"gauss\""),
+                 {}, {"numerics.kernel", "\"gauss\"", "must be one of", "cubic_spline"});
+}
+
+TEST_F(CaseReaderTest, VectorOfWrongLength) {
+    expect_error(replaced(minimal_2d, "gravity = [0.0, -9.75]", "gravity = [0.0, -9.75, 0.0]"), {},
+                 {"physics.gravity", "-9.75", "must be an array of 2 numbers", "2D"});
+    expect_error(minimal_2d, {"fluid[0].velocity=[1.0, 0.0, 0.0]"}, {"fluid[0].velocity", "must be an array of 2"});
+    expect_error(minimal_2d, {"physics.gravity=-9.81"}, {"physics.gravity", "-9.81", "must be an array of 2"});
+    expect_error(minimal_2d, {"physics.gravity=[0.0, \"down\"]"}, {"physics.gravity", "down", "numbers"});
+}
+
+TEST_F(CaseReaderTest, MalformedTomlNamesTheLine) {
+    // Line 3 opens a table header that is never closed.
+    const fs::path f = write("# a comment\n\n[time\nend = 1.0\n");
+    expect_error_file(f, {}, {f.string(), "line 3", "malformed TOML"});
+}
+
+TEST_F(CaseReaderTest, MissingFile) {
+    const fs::path f = dir_ / "does_not_exist.toml";
+    expect_error_file(f, {}, {f.string(), "no such file"});
+}
+
+TEST_F(CaseReaderTest, MissingRequiredKey) {
+    expect_error(replaced(minimal_2d, "end = 0.5", ""), {}, {"time.end", "is required"});
+    expect_error(replaced(minimal_2d, "[domain]\nmin = [-0.125, -0.125]", "[domain]"), {}, {"domain.min", "required"});
+}
+
+TEST_F(CaseReaderTest, NoFluid) {
+    std::string text = replaced(minimal_2d, "[[fluid]]", "[[wall]]");
+    text = replaced(text, "material = \"my_water\"\n", "");
+    expect_error(text, {}, {"no fluid"});
+}
+
+TEST_F(CaseReaderTest, DuplicateProbeName) {
+    expect_error(replaced(minimal_2d, "name = \"front\"", "name = \"p_bottom\""), {},
+                 {"probe[1].name", "\"p_bottom\"", "another probe"});
+}
+
+TEST_F(CaseReaderTest, MalformedOverride) {
+    expect_error(minimal_2d, {"numerics.particle_spacing"}, {"--set 'numerics.particle_spacing'", "key.path=value"});
+    expect_error(minimal_2d, {"=0.02"}, {"--set '=0.02'", "key.path=value"});
+    expect_error(minimal_2d, {"fluid[3].velocity=[1.0, 0.0]"}, {"fluid[3]", "no table"});
+    expect_error(minimal_2d, {"fluid[x].velocity=[1.0, 0.0]"}, {"fluid[x]", "bad index"});
+    expect_error(minimal_2d, {"time.end.x=1"}, {"time.end.x=1", "'end' is not a table"});
+    expect_error(minimal_2d, {"numerics..kernel=x"}, {"numerics..kernel", "empty key"});
+}
+
+}  // namespace
