@@ -147,7 +147,7 @@ void Simulation<Dim>::build_pipeline() {
     pipeline_.add("wall_pressure", [this] {
         boundary::update_wall_pressure(particles_, neighbors_, kernel_, fluid_parameters_.gravity, spec_.materials);
     });
-    pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_); });
+    pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_, fluid_workspace_); });
     pipeline_.add("integrate_update", [this] { integrate_update(); });
     pipeline_.add("health_check", [this] { check_health(); });
     pipeline_.add("time_step", [this] { compute_time_step(); });

@@ -95,6 +95,7 @@ private:
     sph::Kernel<Dim> kernel_;
     double spacing_, smoothing_length_;
     sph::FluidRateParameters<Dim> fluid_parameters_;
+    sph::FluidWorkspace fluid_workspace_;
     std::vector<boundary::JetInlet<Dim>> inlets_;
     Vec domain_min_, domain_max_;
     double max_speed_;

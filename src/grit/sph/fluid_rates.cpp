@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "grit/parallel/parallel.hpp"
-#include "grit/sph/artificial_viscosity.hpp"
+#include <algorithm>
 
 namespace grit::sph {
 
@@ -12,8 +12,9 @@ namespace {
 
 template <int Dim, class K>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm) {
+                      const FluidRateParameters<Dim>& prm, FluidWorkspace& work) {
     using Vec = core::Vec<Dim>;
+    const Index n = ps.size();
     const Vec* x = ps.position();
     const Vec* v = ps.velocity();
     const double* rho = ps.density();
@@ -26,62 +27,75 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const Index* nbr = nl.indices();
     const PairCoefficients* coef = prm.materials.data();
 
+    work.pressure_term.resize(static_cast<std::size_t>(n));
+    work.volume.resize(static_cast<std::size_t>(n));
+    double* p_term = work.pressure_term.data();
+    double* volume = work.volume.data();
+    parallel::for_each(n, [&](Index i) {
+        const double inv_rho = 1.0 / rho[i];
+        p_term[i] = p[i] * inv_rho * inv_rho;
+        volume[i] = m[i] * inv_rho;
+    });
+
     const double h = kernel.h;
-    const double support2 = kernel.support() * kernel.support();
     const double eps_h2 = 0.01 * h * h;  // regularisation of eqs. (25) and (27)
     const double delta = prm.density_diffusion;
     const Vec g = prm.gravity;
-    const ArtificialViscosity av{h};
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
 
-    parallel::for_each(ps.size(), [&](Index a) {
+    parallel::for_each(n, [&](Index a) {
         if (phase[a] != fluid) return;
         const Vec xa = x[a];
         const Vec va = v[a];
         const double rho_a = rho[a];
-        const double p_over_rho2_a = p[a] / (rho_a * rho_a);
+        const double p_term_a = p_term[a];
         const PairCoefficients& ca = coef[mat[a]];
         const double diffusion_scale = 2.0 * delta * h * ca.sound_speed;
         const double hydrostatic_scale = ca.reference_density / (ca.sound_speed * ca.sound_speed);
 
-        Vec dv = Vec::zero();
-        double continuity = 0.0;  // sum_b m_b / rho_b v_ab . grad W
+        double dv[Dim] = {};
+        double continuity = 0.0;  // sum_b V_b v_ab . grad W
         double diffusion = 0.0;
-        for (Index k = nl.begin(a); k < nl.end(a); ++k) {
+        const Index first = nl.begin(a), last = nl.end(a);
+#pragma omp simd reduction(+ : dv[:Dim], continuity, diffusion)
+        for (Index k = first; k < last; ++k) {
             const Index b = nbr[k];
             const Vec xab = xa - x[b];
             const double r2 = core::norm2(xab);
-            if (r2 >= support2) continue;
-            const double r = std::sqrt(r2);
-            const double f = kernel.gradient_factor(r);  // grad_a W_ab = xab * f
+            // Pairs in the list's skin beyond the support get f = 0 and add nothing; testing for
+            // them would cost a mispredicted branch, so they go through the same arithmetic.
+            const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_a W_ab = xab * f
             const Vec vab = va - v[b];
             const double vx = core::dot(vab, xab);
-            const double rho_b = rho[b];
-            const double volume_b = m[b] / rho_b;
+            const double volume_b = volume[b];
             const PairCoefficients& cb = coef[mat[b]];
+            const double inv_r2 = 1.0 / (r2 + eps_h2);
+            const double inv_rho_sum = 1.0 / (rho_a + rho[b]);
 
             continuity += volume_b * vx * f;  // eq. (22)
 
-            // Pressure (eq. 23) and artificial viscosity (eqs. 26-27), both along grad W.
-            double scalar = -(p_over_rho2_a + p[b] / (rho_b * rho_b));
-            if (vx < 0.0) {
-                scalar -= av.pi(vx, r2, 0.5 * (ca.sound_speed + cb.sound_speed), 0.5 * (rho_a + rho_b),
-                                0.5 * (ca.alpha + cb.alpha), 0.5 * (ca.beta + cb.beta));
-            }
-            dv += xab * (m[b] * scalar * f);
+            // Pressure (eq. 23) and artificial viscosity (eqs. 26-27, only for approaching pairs),
+            // both along grad W. The viscosity is written without a branch: phi = 0 when vx >= 0.
+            const double phi = h * std::min(vx, 0.0) * inv_r2;
+            const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
+                                  0.5 * (ca.beta + cb.beta) * phi * phi) *
+                                 2.0 * inv_rho_sum;
+            const double along_x = m[b] * (-(p_term_a + p_term[b]) - pi_ab) * f;
 
             // Laminar viscosity, eq. (25) in the form of Lo & Shao (2002), along v_ab.
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
-            if (nu > 0.0) dv += vab * (m[b] * 4.0 * nu * r2 * f / ((rho_a + rho_b) * (r2 + eps_h2)));
+            const double along_v = m[b] * 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
+            for (int d = 0; d < Dim; ++d) dv[d] += xab[d] * along_x + vab[d] * along_v;
 
-            // Density diffusion between fluid particles, less its hydrostatic part.
-            if (delta > 0.0 && phase[b] == fluid) {
-                const double hydrostatic = hydrostatic_scale * core::dot(g, xab);  // rho^H_a - rho^H_b
-                diffusion += volume_b * ((rho_a - rho_b) - hydrostatic) * r2 * f / (r2 + eps_h2);
-            }
+            // Density diffusion between fluid particles only, less its hydrostatic part.
+            const double fluid_b = phase[b] == fluid ? 1.0 : 0.0;
+            const double hydrostatic = hydrostatic_scale * core::dot(g, xab);  // rho^H_a - rho^H_b
+            diffusion += fluid_b * volume_b * ((rho_a - rho[b]) - hydrostatic) * r2 * f * inv_r2;
         }
+        Vec total = g;
+        for (int d = 0; d < Dim; ++d) total[d] += dv[d];
+        acc[a] = total;
         drho[a] = rho_a * continuity + diffusion_scale * diffusion;
-        acc[a] = dv + g;
     });
 }
 
@@ -89,13 +103,14 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
-                         const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters) {
-    std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters); }, kernel);
+                         const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
+                         FluidWorkspace& workspace) {
+    std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters, workspace); }, kernel);
 }
 
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                     const Kernel<2>&, const FluidRateParameters<2>&);
+                                     const Kernel<2>&, const FluidRateParameters<2>&, FluidWorkspace&);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                     const Kernel<3>&, const FluidRateParameters<3>&);
+                                     const Kernel<3>&, const FluidRateParameters<3>&, FluidWorkspace&);
 
 }  // namespace grit::sph

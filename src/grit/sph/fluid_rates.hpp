@@ -30,6 +30,13 @@ struct FluidRateParameters {
     std::vector<PairCoefficients> materials;
 };
 
+/// Per-step scratch of the fluid sums (recomputed each call, never sorted): p/rho^2 and m/rho of each
+/// particle, so the pair loop divides as little as possible.
+struct FluidWorkspace {
+    std::vector<double> pressure_term;
+    std::vector<double> volume;
+};
+
 /// Fills density_rate and acceleration of every fluid particle from its neighbours (fluid, wall and,
 /// later, solid particles). Gather form: each particle writes only its own rates.
 ///
@@ -37,11 +44,12 @@ struct FluidRateParameters {
 /// grains the porosity is 1 and rho_bar is the particle density.
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
-                         const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters);
+                         const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
+                         FluidWorkspace& workspace);
 
 extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                            const Kernel<2>&, const FluidRateParameters<2>&);
+                                            const Kernel<2>&, const FluidRateParameters<2>&, FluidWorkspace&);
 extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                            const Kernel<3>&, const FluidRateParameters<3>&);
+                                            const Kernel<3>&, const FluidRateParameters<3>&, FluidWorkspace&);
 
 }  // namespace grit::sph

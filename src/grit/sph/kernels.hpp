@@ -2,6 +2,7 @@
 // paper eq. 5), normalised in 2D and 3D, both with support radius 2h.
 #pragma once
 
+#include <algorithm>
 #include <numbers>
 #include <string>
 #include <variant>
@@ -13,10 +14,12 @@ template <int Dim>
 struct CubicSpline {
     static constexpr const char* name = "cubic_spline";
     double h;      ///< smoothing length [m]
+    double inv_h;  ///< 1/h [1/m]
     double sigma;  ///< normalisation a_d: 15/(7 pi h^2) in 2D, 3/(2 pi h^3) in 3D
 
     explicit CubicSpline(double smoothing_length)
         : h(smoothing_length),
+          inv_h(1.0 / smoothing_length),
           sigma(Dim == 2 ? 15.0 / (7.0 * std::numbers::pi * h * h)
                          : 3.0 / (2.0 * std::numbers::pi * h * h * h)) {}
 
@@ -24,7 +27,7 @@ struct CubicSpline {
 
     /// W(r) [1/m^Dim]
     double value(double r) const noexcept {
-        const double q = r / h;
+        const double q = r * inv_h;
         if (q < 1.0) return sigma * (2.0 / 3.0 - q * q + 0.5 * q * q * q);
         if (q < 2.0) {
             const double t = 2.0 - q;
@@ -35,14 +38,11 @@ struct CubicSpline {
 
     /// (1/r) dW/dr [1/m^(Dim+2)], finite at r = 0, so grad_a W_ab = x_ab * gradient_factor(r_ab).
     double gradient_factor(double r) const noexcept {
-        const double q = r / h;
-        const double s = sigma / (h * h);
-        if (q < 1.0) return s * (-2.0 + 1.5 * q);
-        if (q < 2.0) {
-            const double t = 2.0 - q;
-            return -0.5 * s * t * t / q;
-        }
-        return 0.0;
+        const double q = r * inv_h;
+        const double s = sigma * inv_h * inv_h;
+        const double t = std::max(2.0 - q, 0.0);  // 0 beyond the support
+        const double outer = -0.5 * t * t / std::max(q, 1.0);
+        return s * (q < 1.0 ? -2.0 + 1.5 * q : outer);
     }
 };
 
@@ -51,17 +51,19 @@ template <int Dim>
 struct WendlandC2 {
     static constexpr const char* name = "wendland_c2";
     double h;      ///< smoothing length [m]
+    double inv_h;  ///< 1/h [1/m]
     double sigma;  ///< alpha_D: 7/(4 pi h^2) in 2D, 21/(16 pi h^3) in 3D
 
     explicit WendlandC2(double smoothing_length)
         : h(smoothing_length),
+          inv_h(1.0 / smoothing_length),
           sigma(Dim == 2 ? 7.0 / (4.0 * std::numbers::pi * h * h)
                          : 21.0 / (16.0 * std::numbers::pi * h * h * h)) {}
 
     double support() const noexcept { return 2.0 * h; }
 
     double value(double r) const noexcept {
-        const double q = r / h;
+        const double q = r * inv_h;
         if (q >= 2.0) return 0.0;
         const double t = 1.0 - 0.5 * q;
         const double t2 = t * t;
@@ -70,10 +72,8 @@ struct WendlandC2 {
 
     /// (1/r) dW/dr = -5 alpha_D (1 - q/2)^3 / h^2.
     double gradient_factor(double r) const noexcept {
-        const double q = r / h;
-        if (q >= 2.0) return 0.0;
-        const double t = 1.0 - 0.5 * q;
-        return -5.0 * sigma * t * t * t / (h * h);
+        const double t = std::max(1.0 - 0.5 * r * inv_h, 0.0);  // 0 beyond the support
+        return -5.0 * sigma * inv_h * inv_h * t * t * t;
     }
 };
 

@@ -25,7 +25,7 @@ void check_against_brute_force(Index n, double radius, unsigned seed) {
     std::vector<Vec> sorted(x.size());
     for (std::size_t i = 0; i < x.size(); ++i) sorted[i] = x[static_cast<std::size_t>(order[i])];
     // Sorting puts each cell's particles together.
-    for (Index i = 1; i < n; ++i) EXPECT_LE(grid.cell_of(sorted[i - 1]), grid.cell_of(sorted[i]));
+    for (std::size_t i = 0; i + 1 < sorted.size(); ++i) EXPECT_LE(grid.cell_of(sorted[i]), grid.cell_of(sorted[i + 1]));
 
     grit::neighbors::NeighborList<Dim> list;
     list.build(grid, cell_start, sorted.data(), n, radius);
