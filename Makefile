@@ -20,12 +20,15 @@ build: configure
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j 1 $(CTEST_ARGS)
 
-# Unit tests under AddressSanitizer and UndefinedBehaviorSanitizer.
+# Unit tests, and the short whole-case tests (conservation, thread determinism of every case), under
+# AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF
-	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests grit_case_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -L unit -j $(JOBS)
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
+	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  $(SANITIZE_BUILD)/tests/grit_case_tests --gtest_filter='Conservation.*:Determinism.*'
 
 demo: build
 	./$(BUILD)/grit run cases/demo.toml --out output/demo

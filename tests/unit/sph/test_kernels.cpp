@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "grit/core/vec.hpp"
 #include "grit/sph/kernels.hpp"
 
 namespace {
@@ -73,4 +74,18 @@ TEST(Kernels, ChosenByName) {
     EXPECT_TRUE(grit::sph::make_kernel<2>("wendland_c2", 0.1, k));
     EXPECT_TRUE(std::holds_alternative<grit::sph::WendlandC2<2>>(k));
     EXPECT_FALSE(grit::sph::make_kernel<2>("gaussian", 0.1, k));
+}
+
+TEST(Kernels, GradientIsAntisymmetric) {
+    // grad_a W_ab = x_ab F(r) = -grad_b W_ba, for both kernels and both dimensions.
+    const grit::core::Vec<3> xa{{0.01, 0.02, -0.03}}, xb{{-0.05, 0.04, 0.02}};
+    const auto xab = xa - xb, xba = xb - xa;
+    auto check = [&](const auto& k) {
+        const auto ga = xab * k.gradient_factor(grit::core::norm(xab));
+        const auto gb = xba * k.gradient_factor(grit::core::norm(xba));
+        for (int d = 0; d < 3; ++d) EXPECT_EQ(ga[d], -gb[d]);
+        EXPECT_NE(ga[0], 0.0);
+    };
+    check(grit::sph::CubicSpline<3>(0.1));
+    check(grit::sph::WendlandC2<3>(0.1));
 }
