@@ -28,7 +28,7 @@ double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<
     using Vec = core::Vec<Dim>;
     const Vec* x = ps.position();
     const auto* phase = ps.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const std::int32_t fluid = probe.phase;  // the sampled phase (fluid by default)
 
     if (probe.kind == "front") {
         const double lowest = -std::numeric_limits<double>::infinity();

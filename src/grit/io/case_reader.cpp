@@ -319,6 +319,51 @@ material::Material read_material(const Section& s, const std::string& name) {
         s.number_or("artificial_viscosity_alpha", m.artificial_viscosity_alpha, non_negative("[-]"));
     m.artificial_viscosity_beta = s.number_or("artificial_viscosity_beta", m.artificial_viscosity_beta, non_negative("[-]"));
     m.min_pressure = s.number_or("min_pressure", m.min_pressure);
+
+    // Solids: a library solid as base, or `model` set here.
+    const bool was_solid = m.phase == Phase::solid;
+    const std::string current_model = std::visit([](const auto& x) { return std::string(x.name); }, m.solid_model);
+    if (was_solid || s.has("model") || s.has("shear_modulus")) {
+        m.phase = Phase::solid;
+        const std::string model = s.choice("model", current_model, {"elastic", "johnson_cook"});
+        m.solid.shear_modulus = s.number_or("shear_modulus", m.solid.shear_modulus, positive("[Pa]"));
+        if (!(m.solid.shear_modulus > 0.0)) s.fail("shear_modulus", "is required for a solid [Pa]");
+        m.solid.specific_heat = s.number_or("specific_heat", m.solid.specific_heat, non_negative("[J/(kg K)]"));
+        m.solid.taylor_quinney = s.number_or("taylor_quinney", m.solid.taylor_quinney, in_range(0.0, 1.0));
+        m.solid.adiabatic_heating = s.flag_or("adiabatic_heating", m.solid.adiabatic_heating);
+        m.solid.room_temperature = s.number_or("room_temperature", m.solid.room_temperature, positive("[K]"));
+        if (m.solid.adiabatic_heating && !(m.solid.specific_heat > 0.0))
+            s.fail("adiabatic_heating", "needs specific_heat > 0 [J/(kg K)]");
+        if (model == "elastic") {
+            m.solid_model = material::ElasticSolid{};
+        } else {
+            material::JohnsonCook jc;
+            if (auto* old = std::get_if<material::JohnsonCook>(&m.solid_model)) jc = *old;
+            auto& st = jc.strength;
+            st.A = s.number_or("yield_stress", st.A, non_negative("[Pa]"));
+            st.B = s.number_or("hardening_modulus", st.B, non_negative("[Pa]"));
+            st.n = s.number_or("hardening_exponent", st.n, positive("[-]"));
+            st.C = s.number_or("strain_rate_coefficient", st.C, non_negative("[-]"));
+            st.m = s.number_or("thermal_softening_exponent", st.m, positive("[-]"));
+            st.reference_strain_rate = s.number_or("reference_strain_rate", st.reference_strain_rate, positive("[1/s]"));
+            st.melt_temperature = s.number_or("melt_temperature", st.melt_temperature, positive("[K]"));
+            st.room_temperature = m.solid.room_temperature;
+            if (!(st.melt_temperature > st.room_temperature))
+                s.fail("melt_temperature", "must exceed room_temperature [K]");
+            if (!(st.A > 0.0)) s.fail("yield_stress", "is required for a Johnson-Cook solid [Pa]");
+            jc.failure_enabled = s.flag_or("failure", jc.failure_enabled);
+            auto& f = jc.failure;
+            f.D1 = s.number_or("failure_d1", f.D1);
+            f.D2 = s.number_or("failure_d2", f.D2);
+            f.D3 = s.number_or("failure_d3", f.D3);
+            f.D4 = s.number_or("failure_d4", f.D4);
+            f.D5 = s.number_or("failure_d5", f.D5);
+            f.reference_strain_rate = st.reference_strain_rate;
+            f.room_temperature = st.room_temperature;
+            f.melt_temperature = st.melt_temperature;
+            m.solid_model = jc;
+        }
+    }
     return m;
 }
 
@@ -326,10 +371,10 @@ class MaterialTable {
 public:
     MaterialTable(const Section& defined, std::vector<material::Material>& used) : defined_(defined), used_(used) {}
 
-    /// Index of the material named by key `key` of section `s`.
-    int resolve(const Section& s, std::string_view key, const std::string& name) {
+    /// Index of the material named by key `key` of section `s`, which must be of phase `phase`.
+    int resolve(const Section& s, std::string_view key, const std::string& name, Phase phase = Phase::fluid) {
         for (std::size_t k = 0; k < used_.size(); ++k)
-            if (used_[k].name == name) return static_cast<int>(k);
+            if (used_[k].name == name) return check(s, key, static_cast<int>(k), phase);
         if (defined_.has(name)) {
             used_.push_back(read_material(defined_.section(name), name));
         } else if (auto m = material::find_in_library(name)) {
@@ -340,10 +385,19 @@ public:
             for (const auto& k : defined_.keys()) known += ", " + k;
             s.fail(key, "unknown material (known: " + known + ")");
         }
-        if (used_.back().phase != Phase::fluid)
-            s.fail(key, "is not a fluid material; only fluids are supported so far");
-        return static_cast<int>(used_.size()) - 1;
+        return check(s, key, static_cast<int>(used_.size()) - 1, phase);
     }
+
+private:
+    int check(const Section& s, std::string_view key, int index, Phase phase) const {
+        const Phase has = used_[static_cast<std::size_t>(index)].phase;
+        if (has != phase)
+            s.fail(key, phase == Phase::solid ? "is not a solid material (a solid needs shear_modulus and a model)"
+                                              : "is a solid material; this block needs a fluid");
+        return index;
+    }
+
+public:
 
 private:
     const Section& defined_;
@@ -428,6 +482,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.neighbor_skin = numerics.number_or("neighbor_skin", c.neighbor_skin, in_range(0.0, 2.0));
     c.check_interval = numerics.integer_or("check_interval", c.check_interval, 1, 1000000);
     c.max_speed = numerics.number_or("max_speed", 0.0, non_negative("[m/s]"));
+    c.artificial_stress = numerics.number_or("artificial_stress", c.artificial_stress, in_range(0.0, 1.0));
     const double dx = c.particle_spacing;
 
     const Section physics = top.section("physics");
@@ -462,13 +517,39 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         in.stop = s.number_or("stop", 1e300, non_negative("[s]"));
         c.inlets.push_back(std::move(in));
     }
-    if (c.fluids.empty() && c.inlets.empty())
-        throw InputError("the case has no fluid: add a [[fluid]] block or an [[inlet]]");
-    const int default_material = c.fluids.empty() ? c.inlets.front().material : c.fluids.front().material;
+    for (const Section& f : top.sections("solid")) {
+        BlockSpec b;
+        b.key = f.path();
+        b.shape = read_shape(f, dim, dx, false);
+        b.material = table.resolve(f, "material", f.text("material"), Phase::solid);
+        b.velocity = f.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+        b.velocity_profile = f.choice("velocity_profile", "uniform", {"uniform", "cantilever_mode"});
+        if (b.velocity_profile == "cantilever_mode") {
+            b.mode_origin = f.number("mode_origin");
+            b.mode_length = f.number("mode_length", positive("[m]"));
+            b.mode_tip_velocity = f.number("mode_tip_velocity");
+        }
+        c.solids.push_back(std::move(b));
+    }
+    for (const Section& s : top.sections("clamp")) {
+        OutletSpec o;
+        o.key = s.path();
+        o.min = s.vector("min", dim, "[m]");
+        o.max = s.vector("max", dim, "[m]");
+        for (int k = 0; k < dim; ++k)
+            if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
+        c.clamps.push_back(std::move(o));
+    }
+    if (!c.clamps.empty() && c.solids.empty()) throw InputError("key 'clamp': clamps hold solids, and the case has no [[solid]]");
+    const int default_material = !c.fluids.empty() ? c.fluids.front().material
+                                 : !c.inlets.empty() ? c.inlets.front().material
+                                                     : -1;
     for (const Section& w : top.sections("wall")) {
         BlockSpec b;
         b.key = w.path();
         b.shape = read_shape(w, dim, dx, true);
+        if (!w.has("material") && default_material < 0)
+            w.fail("material", "is required: walls take the EOS of a fluid, and the case has none");
         b.material = w.has("material") ? table.resolve(w, "material", w.text("material")) : default_material;
         c.walls.push_back(std::move(b));
     }
@@ -490,6 +571,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
             s.fail("name", "must be a non-empty column name without commas, spaces or quotes");
         if (!probe_names.insert(p.name).second) s.fail("name", "is used by another probe");
         p.kind = s.choice("kind", "point", {"point", "front"});
+        p.phase = s.choice("phase", "fluid", {"fluid", "solid"}) == "solid" ? 1 : 0;
         if (p.kind == "point") {
             p.quantity = s.choice("quantity", "pressure", {"pressure", "density", "velocity"});
             p.position = s.vector("position", dim, "[m]");
@@ -520,6 +602,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (!in_use) read_material(materials.section(name), name);
     }
 
+    if (c.fluids.empty() && c.inlets.empty() && c.solids.empty())
+        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]] or [[inlet]]");
     report_unknown(root, "", used);
     return c;
 }

@@ -19,13 +19,18 @@ struct ShapeSpec {
     std::vector<std::string> open;  ///< tank: sides left without wall ("top", "bottom", "left", ...)
 };
 
-/// A block of particles: fluid or wall.
+/// A block of particles: fluid, solid or wall.
 struct BlockSpec {
     std::string key;  ///< where it was defined, for messages: "fluid[0]"
     ShapeSpec shape;
     int material = 0;  ///< index into CaseSpec::materials
     std::vector<double> velocity;
     bool hydrostatic = false;  ///< fluid: start with the hydrostatic pressure of its own column
+    /// solid: "uniform" (velocity), or "cantilever_mode" — the first bending mode of a cantilever
+    /// clamped at x = mode_origin with free length mode_length, transverse (y) velocity mode_tip_velocity
+    /// at the tip (Gray, Monaghan & Swift 2001).
+    std::string velocity_profile = "uniform";
+    double mode_origin = 0.0, mode_length = 0.0, mode_tip_velocity = 0.0;
 };
 
 /// A jet inlet: emits layers of particles through a segment (2D) or disc (3D).
@@ -49,7 +54,8 @@ struct OutletSpec {
 struct ProbeSpec {
     std::string key;
     std::string name;      ///< column name
-    std::string kind;      ///< "point": Shepard interpolation; "front": furthest fluid along an axis
+    std::string kind;      ///< "point": Shepard interpolation; "front": furthest particle along an axis
+    int phase = 0;         ///< the phase sampled: 0 fluid (default), 1 solid
     std::string quantity;  ///< point: "pressure", "density", "velocity"
     std::vector<double> position;  ///< point [m]
     int axis = 0;                  ///< front: 0 = x, 1 = y, 2 = z
@@ -77,6 +83,7 @@ struct CaseSpec {
     double neighbor_skin = 0.2;          ///< numerics.neighbor_skin, in units of h
     int check_interval = 50;             ///< numerics.check_interval [steps]
     double max_speed = 0.0;              ///< numerics.max_speed [m/s]: faster is a blow-up (0 = auto)
+    double artificial_stress = 0.3;      ///< numerics.artificial_stress: epsilon of Gray et al. (2001)
 
     std::vector<double> gravity;  ///< physics.gravity [m/s^2]
 
@@ -85,7 +92,9 @@ struct CaseSpec {
 
     std::vector<material::Material> materials;  ///< the materials the case uses
     std::vector<BlockSpec> fluids;
+    std::vector<BlockSpec> solids;
     std::vector<BlockSpec> walls;
+    std::vector<OutletSpec> clamps;  ///< boxes: solid particles inside at the start are held fixed
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
     std::vector<ProbeSpec> probes;

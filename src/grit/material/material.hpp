@@ -6,6 +6,7 @@
 
 #include "grit/core/types.hpp"
 #include "grit/material/equation_of_state.hpp"
+#include "grit/material/solid_model.hpp"
 
 namespace grit::material {
 
@@ -19,6 +20,10 @@ struct Material {
     double artificial_viscosity_beta = 0.1;   ///< beta_pi of eq. (26) [-]
     /// Pressure floor [Pa]: the EOS result is limited to at least this value (cavitation in tension).
     double min_pressure = -std::numeric_limits<double>::infinity();
+
+    // Solids (phase == Phase::solid) only.
+    SolidModel solid_model = ElasticSolid{};  ///< constitutive model: strength and failure
+    SolidProperties solid;                    ///< shear modulus and thermal data
 
     double reference_density() const { return material::reference_density(eos); }
     double sound_speed() const { return reference_sound_speed(eos); }

@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "grit/core/sym_tensor.hpp"
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
 #include "grit/io/point_data.hpp"
@@ -80,6 +81,11 @@ void Field<T>::append_output(io::PointCloud& cloud) const {
         a.real.assign(values_.size() * 3, 0.0);
         for (std::size_t i = 0; i < values_.size(); ++i)
             for (int k = 0; k < dim; ++k) a.real[3 * i + static_cast<std::size_t>(k)] = values_[i][k];
+    } else if constexpr (std::is_same_v<T, core::SymTensor3>) {
+        // ParaView's symmetric-tensor order: XX, YY, ZZ, XY, YZ, XZ.
+        a.components = 6;
+        a.real.reserve(values_.size() * 6);
+        for (const auto& t : values_) a.real.insert(a.real.end(), {t.xx, t.yy, t.zz, t.xy, t.yz, t.zx});
     } else {
         static_assert(sizeof(T) == 0, "field type has no output form");
     }

@@ -72,6 +72,13 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     domain_min_ = to_vec<Dim>(spec_.domain_min);
     domain_max_ = to_vec<Dim>(spec_.domain_max);
 
+    has_solids_ = !spec_.solids.empty();
+    solid_parameters_.gravity = fluid_parameters_.gravity;
+    solid_parameters_.artificial_stress = spec_.artificial_stress;
+    solid_parameters_.spacing = spacing_;
+    solid_parameters_.materials = fluid_parameters_.materials;
+    if (has_solids_) register_solid_fields();
+
     build_particles();
     for (const auto& in : spec_.inlets) {
         const auto& m = spec_.materials[static_cast<std::size_t>(in.material)];
@@ -114,7 +121,19 @@ void Simulation<Dim>::build_particles() {
         for (std::size_t k = 0; k < points.size(); ++k) {
             const Index i = first + static_cast<Index>(k);
             x[i] = points[k];
-            v[i] = phase == Phase::fluid ? to_vec<Dim>(b.velocity) : Vec::zero();
+            v[i] = phase != Phase::wall ? to_vec<Dim>(b.velocity) : Vec::zero();
+            if (b.velocity_profile == "cantilever_mode") {
+                // First bending mode of a clamped-free beam, k L = 1.875 (Gray, Monaghan & Swift 2001):
+                // W(s) = cosh ks - cos ks - sigma (sinh ks - sin ks), sigma = (cosh kL + cos kL) /
+                // (sinh kL + sin kL), s = x - x0; v_y = V W(s) / W(L).
+                const double kl = 1.87510407, wavenumber = kl / b.mode_length;
+                const double sigma = (std::cosh(kl) + std::cos(kl)) / (std::sinh(kl) + std::sin(kl));
+                auto mode = [&](double s) {
+                    const double ks = wavenumber * std::clamp(s, 0.0, b.mode_length);
+                    return std::cosh(ks) - std::cos(ks) - sigma * (std::sinh(ks) - std::sin(ks));
+                };
+                v[i][1] += b.mode_tip_velocity * mode(points[k][0] - b.mode_origin) / mode(b.mode_length);
+            }
             v_half[i] = v[i];
             p[i] = 0.0;
             if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
@@ -126,7 +145,30 @@ void Simulation<Dim>::build_particles() {
         }
     };
     for (const auto& f : spec_.fluids) add_block(f, Phase::fluid);
+    const Index first_solid = particles_.size();
+    for (const auto& s : spec_.solids) add_block(s, Phase::solid);
     for (const auto& w : spec_.walls) add_block(w, Phase::wall);
+    if (has_solids_) {
+        // Solids start at their room temperature; clamp boxes hold the solid particles inside them.
+        auto& temperature = particles_.fields().template get<double>("temperature");
+        auto& fixed = particles_.fields().template get<std::int32_t>("fixed");
+        const Vec* xs = particles_.position();
+        for (Index i = first_solid; i < particles_.size(); ++i) {
+            if (particles_.phase()[i] != static_cast<std::int32_t>(Phase::solid)) continue;
+            temperature[i] = spec_.materials[static_cast<std::size_t>(particles_.material()[i])].solid.room_temperature;
+            for (const auto& c : spec_.clamps)
+                if (inside<Dim>(xs[i], c.min, c.max)) {
+                    fixed[i] = 1;
+                    particles_.velocity()[i] = Vec::zero();
+                    particles_.velocity_half()[i] = Vec::zero();
+                }
+        }
+        for (const auto& c : spec_.clamps) {
+            bool any = false;
+            for (Index i = first_solid; i < particles_.size() && !any; ++i) any = fixed[i] && inside<Dim>(xs[i], c.min, c.max);
+            if (!any) throw core::InputError(fmt::format("{}: the clamp box holds no solid particle", c.key));
+        }
+    }
 
     const Vec* x = particles_.position();
     for (Index i = 0; i < particles_.size(); ++i)
@@ -142,13 +184,28 @@ void Simulation<Dim>::build_pipeline() {
     pipeline_.add("integrate_predict", [this] { integrate_predict(); });
     pipeline_.add("boundaries", [this] { apply_boundaries(); });
     pipeline_.add("neighbors", [this] { update_neighbors(false); });
-    pipeline_.add("equation_of_state",
-                  [this] { sph::update_pressure(particles_, spec_.materials, Phase::fluid); });
+    pipeline_.add("equation_of_state", [this] {
+        sph::update_pressure(particles_, spec_.materials, Phase::fluid);
+        if (has_solids_)
+            sph::update_pressure(particles_, spec_.materials, Phase::solid,
+                                 particles_.fields().template get<double>("specific_energy").data());
+    });
     pipeline_.add("wall_pressure", [this] {
         boundary::update_wall_pressure(particles_, neighbors_, kernel_, fluid_parameters_.gravity, spec_.materials);
     });
+    pipeline_.add("sph_prepare", [this] { sph::prepare_sph_workspace(particles_, fluid_workspace_); });
     pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_, fluid_workspace_); });
+    if (has_solids_) {
+        pipeline_.add("sph_solid", [this] {
+            sph::compute_solid_rates(particles_, neighbors_, kernel_, solid_parameters_, fluid_workspace_,
+                                     solid_workspace_);
+        });
+    }
     pipeline_.add("integrate_update", [this] { integrate_update(); });
+    if (has_solids_) {
+        pipeline_.add("solid_stress", [this] { update_solid_stress(); });
+        pipeline_.add("erosion", [this] { remove_failed_solids(); });
+    }
     pipeline_.add("health_check", [this] { check_health(); });
     pipeline_.add("time_step", [this] { compute_time_step(); });
 }
@@ -171,11 +228,13 @@ void Simulation<Dim>::integrate_predict() {
     const Vec* a = particles_.acceleration();
     const double* drho = particles_.density_rate();
     const std::int32_t* ph = particles_.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const std::int32_t* fixed = has_solids_ ? particles_.fields().template get<std::int32_t>("fixed").data() : nullptr;
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
     parallel::for_each(particles_.size(), [&](Index i) {
-        if (ph[i] != fluid) return;
-        v[i] = v_half[i] + a[i] * half;
+        if (ph[i] != fluid && ph[i] != solid) return;
         rho[i] = rho_half[i] + drho[i] * half;
+        if (fixed && fixed[i]) return;  // clamped solids stay at rest
+        v[i] = v_half[i] + a[i] * half;
     });
 }
 
@@ -191,16 +250,95 @@ void Simulation<Dim>::integrate_update() {
     const Vec* a = particles_.acceleration();
     const double* drho = particles_.density_rate();
     const std::int32_t* ph = particles_.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const std::int32_t* fixed = has_solids_ ? particles_.fields().template get<std::int32_t>("fixed").data() : nullptr;
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
     parallel::for_each(particles_.size(), [&](Index i) {
-        if (ph[i] != fluid) return;
-        v_half[i] += a[i] * kick;
+        if (ph[i] != fluid && ph[i] != solid) return;
         rho_half[i] += drho[i] * kick;
-        x[i] += v_half[i] * dt;
         // Between steps, velocity and density show the half-step state (outputs, diagnostics).
-        v[i] = v_half[i];
         rho[i] = rho_half[i];
+        if (fixed && fixed[i]) return;
+        v_half[i] += a[i] * kick;
+        x[i] += v_half[i] * dt;
+        v[i] = v_half[i];
     });
+}
+
+template <int Dim>
+void Simulation<Dim>::register_solid_fields() {
+    particles::FieldRegistry& f = particles_.fields();
+    f.add<core::SymTensor3>("deviatoric_stress", core::SymTensor3::zero(), true);
+    f.add<double>("plastic_strain", 0.0, true);
+    f.add<double>("damage", 0.0, true);
+    f.add<double>("von_mises", 0.0, true);
+    f.add<double>("temperature", 0.0, true);
+    f.add<double>("specific_energy", 0.0, false);
+    f.add<std::int32_t>("fixed", 0, true);
+}
+
+template <int Dim>
+void Simulation<Dim>::update_solid_stress() {
+    // Material update of every solid particle (first seed paper Fig. 6): Jaumann rate, radial return,
+    // plastic strain, damage, temperature; and the specific internal energy. One loop per material,
+    // dispatched once on its constitutive model.
+    auto& f = particles_.fields();
+    core::SymTensor3* tau = f.template get<core::SymTensor3>("deviatoric_stress").data();
+    double* eps_p = f.template get<double>("plastic_strain").data();
+    double* damage = f.template get<double>("damage").data();
+    double* vm = f.template get<double>("von_mises").data();
+    double* temperature = f.template get<double>("temperature").data();
+    double* energy = f.template get<double>("specific_energy").data();
+    const double* p = particles_.pressure();
+    const double* rho = particles_.density();
+    const std::int32_t* ph = particles_.phase();
+    const std::int32_t* mat = particles_.material();
+    const core::SymTensor3* rate = solid_workspace_.strain_rate.data();
+    const material::Spin* spin = solid_workspace_.spin.data();
+    const double* de = solid_workspace_.energy_rate.data();
+    const double dt = dt_;
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    for (std::size_t m = 0; m < spec_.materials.size(); ++m) {
+        const auto& material = spec_.materials[m];
+        if (material.phase != Phase::solid) continue;
+        const auto id = static_cast<std::int32_t>(m);
+        std::visit(
+            [&](const auto& model) {
+                parallel::for_each(particles_.size(), [&](Index i) {
+                    if (ph[i] != solid || mat[i] != id) return;
+                    material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i]};
+                    s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt);
+                    tau[i] = s.deviatoric_stress;
+                    eps_p[i] = s.plastic_strain;
+                    damage[i] = s.damage;
+                    temperature[i] = s.temperature;
+                    vm[i] = s.deviatoric_stress.von_mises();
+                    energy[i] += de[i] * dt;
+                });
+            },
+            material.solid_model);
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::remove_failed_solids() {
+    // Eq. (36): a particle with D >= 1 is removed and its mass booked as eroded.
+    const double* damage = particles_.fields().template get<double>("damage").data();
+    const std::int32_t* ph = particles_.phase();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const Index n = particles_.size();
+    const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{ph[i] == solid && damage[i] >= 1.0}; });
+    if (failed == 0) return;
+    const double* m = particles_.mass();
+    std::vector<Index> keep;
+    keep.reserve(static_cast<std::size_t>(n - failed));
+    for (Index i = 0; i < n; ++i) {
+        if (ph[i] == solid && damage[i] >= 1.0)
+            eroded_mass_ += m[i];
+        else
+            keep.push_back(i);
+    }
+    particles_.gather(keep);
+    neighbors_stale_ = true;
 }
 
 template <int Dim>
@@ -268,7 +406,7 @@ void Simulation<Dim>::compute_time_step() {
     const Vec* a = particles_.acceleration();
     const std::int32_t* ph = particles_.phase();
     const std::int32_t* mat = particles_.material();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
     const auto* coef = fluid_parameters_.materials.data();
     const double huge = std::numeric_limits<double>::max();
     struct Limits {
@@ -277,7 +415,7 @@ void Simulation<Dim>::compute_time_step() {
     const Limits lim = parallel::reduce(
         particles_.size(), Limits{huge, 0.0},
         [&](Index i) {
-            if (ph[i] != fluid) return Limits{huge, 0.0};
+            if (ph[i] != fluid && ph[i] != solid) return Limits{huge, 0.0};
             return Limits{h / (coef[mat[i]].sound_speed + core::norm(v[i])), core::norm2(a[i])};
         },
         [](Limits x, Limits y) { return Limits{std::min(x.cfl, y.cfl), std::max(x.accel2, y.accel2)}; });
@@ -350,7 +488,7 @@ template <int Dim>
 void Simulation<Dim>::prime() {
     primed_ = true;
     update_neighbors(true);
-    pipeline_.run_only({"equation_of_state", "wall_pressure", "sph_fluid", "time_step"});
+    pipeline_.run_only({"equation_of_state", "wall_pressure", "sph_prepare", "sph_fluid", "sph_solid", "time_step"});
     // The first step recomputes these rates at the same state; prime only sizes the first dt.
     last_good_ = particles_;
 }

@@ -19,6 +19,7 @@
 #include "grit/sim/pipeline.hpp"
 #include "grit/sph/fluid_rates.hpp"
 #include "grit/sph/kernels.hpp"
+#include "grit/sph/solid_rates.hpp"
 
 namespace grit::sim {
 
@@ -37,6 +38,8 @@ struct RunSummary {
     double particle_steps_per_second = 0.0;
     double pair_interactions_per_second = 0.0;
     double kinetic_energy = 0.0, mass_total = 0.0, mass_in = 0.0, mass_out = 0.0, max_velocity = 0.0;
+    bool has_solids = false;
+    double eroded_mass = 0.0, max_plastic_strain = 0.0;
     std::vector<double> momentum;
     std::vector<std::string> probe_names;
     std::vector<double> probe_values;
@@ -67,6 +70,7 @@ public:
     long steps() const { return step_; }
     double mass_in() const { return mass_in_; }
     double mass_out() const { return mass_out_; }
+    double eroded_mass() const { return eroded_mass_; }
     const Pipeline& pipeline() const { return pipeline_; }
     std::size_t pair_count() const { return neighbors_.pair_count(); }
     double probe(std::size_t k) const;
@@ -83,6 +87,11 @@ private:
     void apply_boundaries();
     void update_neighbors(bool force);
     void compute_time_step();
+    void register_solid_fields();
+    void update_solid_stress();
+    void remove_failed_solids();
+    /// True for particles the integrator moves: fluid, and solids that are not clamped.
+    bool moves(Index i) const;
     void check_health();
 
     void write_output();
@@ -96,6 +105,10 @@ private:
     double spacing_, smoothing_length_;
     sph::FluidRateParameters<Dim> fluid_parameters_;
     sph::FluidWorkspace fluid_workspace_;
+    bool has_solids_ = false;
+    sph::SolidRateParameters<Dim> solid_parameters_;
+    sph::SolidWorkspace solid_workspace_;
+    double eroded_mass_ = 0.0;
     std::vector<boundary::JetInlet<Dim>> inlets_;
     Vec domain_min_, domain_max_;
     double max_speed_;

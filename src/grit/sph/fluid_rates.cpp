@@ -12,13 +12,12 @@ namespace {
 
 template <int Dim, class K>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm, FluidWorkspace& work) {
+                      const FluidRateParameters<Dim>& prm, const FluidWorkspace& work) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
     const Vec* v = ps.velocity();
     const double* rho = ps.density();
-    const double* p = ps.pressure();
     const double* m = ps.mass();
     const std::int32_t* phase = ps.phase();
     const std::int32_t* mat = ps.material();
@@ -27,15 +26,8 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const Index* nbr = nl.indices();
     const PairCoefficients* coef = prm.materials.data();
 
-    work.pressure_term.resize(static_cast<std::size_t>(n));
-    work.volume.resize(static_cast<std::size_t>(n));
-    double* p_term = work.pressure_term.data();
-    double* volume = work.volume.data();
-    parallel::for_each(n, [&](Index i) {
-        const double inv_rho = 1.0 / rho[i];
-        p_term[i] = p[i] * inv_rho * inv_rho;
-        volume[i] = m[i] * inv_rho;
-    });
+    const double* p_term = work.pressure_term.data();
+    const double* volume = work.volume.data();
 
     const double h = kernel.h;
     const double eps_h2 = 0.01 * h * h;  // regularisation of eqs. (25) and (27)
@@ -102,15 +94,34 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 }  // namespace
 
 template <int Dim>
+void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, FluidWorkspace& work) {
+    const Index n = ps.size();
+    const double* rho = ps.density();
+    const double* p = ps.pressure();
+    const double* m = ps.mass();
+    work.pressure_term.resize(static_cast<std::size_t>(n));
+    work.volume.resize(static_cast<std::size_t>(n));
+    double* p_term = work.pressure_term.data();
+    double* volume = work.volume.data();
+    parallel::for_each(n, [&](Index i) {
+        const double inv_rho = 1.0 / rho[i];
+        p_term[i] = p[i] * inv_rho * inv_rho;
+        volume[i] = m[i] * inv_rho;
+    });
+}
+
+template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         FluidWorkspace& workspace) {
+                         const FluidWorkspace& workspace) {
     std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters, workspace); }, kernel);
 }
 
+template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, FluidWorkspace&);
+template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, FluidWorkspace&);
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                     const Kernel<2>&, const FluidRateParameters<2>&, FluidWorkspace&);
+                                     const Kernel<2>&, const FluidRateParameters<2>&, const FluidWorkspace&);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                     const Kernel<3>&, const FluidRateParameters<3>&, FluidWorkspace&);
+                                     const Kernel<3>&, const FluidRateParameters<3>&, const FluidWorkspace&);
 
 }  // namespace grit::sph

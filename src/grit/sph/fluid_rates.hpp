@@ -30,12 +30,16 @@ struct FluidRateParameters {
     std::vector<PairCoefficients> materials;
 };
 
-/// Per-step scratch of the fluid sums (recomputed each call, never sorted): p/rho^2 and m/rho of each
+/// Per-step scratch of the SPH sums (recomputed each step, never sorted): p/rho^2 and m/rho of each
 /// particle, so the pair loop divides as little as possible.
 struct FluidWorkspace {
     std::vector<double> pressure_term;
     std::vector<double> volume;
 };
+
+/// Fills the workspace for this step: p/rho^2 and m/rho of every particle.
+template <int Dim>
+void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, FluidWorkspace& workspace);
 
 /// Fills density_rate and acceleration of every fluid particle from its neighbours (fluid, wall and,
 /// later, solid particles). Gather form: each particle writes only its own rates.
@@ -45,11 +49,13 @@ struct FluidWorkspace {
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         FluidWorkspace& workspace);
+                         const FluidWorkspace& workspace);
 
+extern template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, FluidWorkspace&);
+extern template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, FluidWorkspace&);
 extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                            const Kernel<2>&, const FluidRateParameters<2>&, FluidWorkspace&);
+                                            const Kernel<2>&, const FluidRateParameters<2>&, const FluidWorkspace&);
 extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                            const Kernel<3>&, const FluidRateParameters<3>&, FluidWorkspace&);
+                                            const Kernel<3>&, const FluidRateParameters<3>&, const FluidWorkspace&);
 
 }  // namespace grit::sph

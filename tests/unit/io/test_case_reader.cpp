@@ -167,7 +167,7 @@ TEST_F(CaseReaderTest, EveryShippedCaseReads) {
             EXPECT_GT(c.output_interval, 0.0);
             EXPECT_EQ(c.gravity.size(), static_cast<std::size_t>(c.dimension));
             EXPECT_FALSE(c.materials.empty());
-            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty());
+            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty() && c.solids.empty());
         } catch (const std::exception& e) {
             ADD_FAILURE() << f << ": " << e.what();
         }
@@ -448,7 +448,9 @@ TEST_F(CaseReaderTest, MissingRequiredKey) {
 TEST_F(CaseReaderTest, NoFluid) {
     std::string text = replaced(minimal_2d, "[[fluid]]", "[[wall]]");
     text = replaced(text, "material = \"my_water\"\n", "");
-    expect_error(text, {}, {"no fluid"});
+    // The block that was the fluid is now a wall, which needs a fluid's EOS: the walls' material is
+    // required and the message says why.
+    expect_error(text, {}, {"wall[0].material", "is required", "the case has none"});
 }
 
 TEST_F(CaseReaderTest, DuplicateProbeName) {

@@ -1,0 +1,148 @@
+// Constitutive models of solids (laws only) and the update of one material point over one time
+// step: Jaumann stress rate (first seed paper eq. 30), von Mises radial return (eq. 32), plastic strain,
+// cumulative damage (eq. 36) and adiabatic heating. The SPH stage and the single-point driver call the
+// same function, so what the driver verifies is what the particles do.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <variant>
+
+#include "grit/core/sym_tensor.hpp"
+#include "grit/material/johnson_cook.hpp"
+
+namespace grit::material {
+
+/// Linear elastic (no yield).
+struct ElasticSolid {
+    static constexpr const char* name = "elastic";
+};
+
+/// Johnson-Cook strength with (optionally) Johnson-Cook failure.
+struct JohnsonCook {
+    static constexpr const char* name = "johnson_cook";
+    JohnsonCookStrength strength;
+    JohnsonCookFailure failure;
+    bool failure_enabled = true;
+};
+
+/// The solid models a material may choose by name.
+using SolidModel = std::variant<ElasticSolid, JohnsonCook>;
+
+/// Elastic and thermal data every solid has.
+struct SolidProperties {
+    double shear_modulus = 0.0;       ///< G [Pa]
+    double specific_heat = 0.0;       ///< c_p [J/(kg K)]; used when adiabatic_heating
+    double taylor_quinney = 0.9;      ///< fraction of plastic work turned into heat [-]
+    bool adiabatic_heating = false;   ///< off: T stays at the room temperature
+    double room_temperature = 293.0;  ///< initial temperature [K]
+};
+
+/// Spin tensor W (antisymmetric): W_xy = -W_yx etc. [1/s]
+struct Spin {
+    double xy = 0.0, yz = 0.0, zx = 0.0;
+};
+
+/// State carried by a solid material point.
+struct SolidPointState {
+    core::SymTensor3 deviatoric_stress;  ///< tau [Pa]
+    double plastic_strain = 0.0;         ///< equivalent plastic strain eps_p [-]
+    double plastic_strain_rate = 0.0;    ///< of the last step [1/s]
+    double damage = 0.0;                 ///< D of eq. (36) [-]
+    double temperature = 293.0;          ///< [K]
+};
+
+/// Jaumann rate of the deviatoric stress, eq. (30): 2G (eps_dot - tr/3 I) + tau W^T + W tau
+/// (the paper's tau^{a c} R^{b c} + tau^{b c} R^{a c}).
+inline core::SymTensor3 jaumann_rate(const core::SymTensor3& tau, const core::SymTensor3& strain_rate,
+                                     const Spin& w, double shear_modulus) noexcept {
+    const double t[3][3] = {{tau.xx, tau.xy, tau.zx}, {tau.xy, tau.yy, tau.yz}, {tau.zx, tau.yz, tau.zz}};
+    const double r[3][3] = {{0.0, w.xy, -w.zx}, {-w.xy, 0.0, w.yz}, {w.zx, -w.yz, 0.0}};
+    auto rot = [&](int a, int b) {
+        double s = 0.0;
+        for (int g = 0; g < 3; ++g) s += t[a][g] * r[b][g] + t[b][g] * r[a][g];
+        return s;
+    };
+    const core::SymTensor3 e = strain_rate.deviator();
+    return {2.0 * shear_modulus * e.xx + rot(0, 0), 2.0 * shear_modulus * e.yy + rot(1, 1),
+            2.0 * shear_modulus * e.zz + rot(2, 2), 2.0 * shear_modulus * e.xy + rot(0, 1),
+            2.0 * shear_modulus * e.yz + rot(1, 2), 2.0 * shear_modulus * e.zx + rot(2, 0)};
+}
+
+/// Yield stress of the model [Pa] (infinite for an elastic solid).
+inline double yield_stress(const SolidModel& model, double plastic_strain, double rate, double temperature) {
+    return std::visit(
+        [&](const auto& m) -> double {
+            using M = std::decay_t<decltype(m)>;
+            if constexpr (std::is_same_v<M, JohnsonCook>)
+                return m.strength.yield_stress(plastic_strain, rate, temperature);
+            else
+                return std::numeric_limits<double>::infinity();
+        },
+        model);
+}
+
+/// Advances one material point by dt: trial stress from the Jaumann rate, radial return onto the
+/// yield surface (eq. 32) with sigma_vm_trial - 3 G d eps_p = sigma_y(eps_p + d eps_p), damage D += d eps_p /
+/// eps_f (eq. 36), heating dT = beta sigma_y d eps_p / (rho c_p). At D >= 1 the deviatoric stress
+/// is zero. `pressure` is p (positive in compression), used for the triaxiality -p / sigma_vm.
+template <class Model>
+SolidPointState update_solid_point(const Model& model, const SolidProperties& props, const SolidPointState& s,
+                                   const core::SymTensor3& strain_rate, const Spin& spin, double pressure,
+                                   double density, double dt) noexcept {
+    SolidPointState next = s;
+    if (s.damage >= 1.0) {
+        next.deviatoric_stress = core::SymTensor3::zero();
+        next.plastic_strain_rate = 0.0;
+        return next;
+    }
+    core::SymTensor3 trial = s.deviatoric_stress + jaumann_rate(s.deviatoric_stress, strain_rate, spin,
+                                                                props.shear_modulus) * dt;
+    trial = trial.deviator();  // keep it traceless against round-off
+    next.deviatoric_stress = trial;
+    next.plastic_strain_rate = 0.0;
+    if constexpr (std::is_same_v<Model, JohnsonCook>) {
+        const double vm_trial = trial.von_mises();
+        // The rate entering the yield stress: the total equivalent deviatoric strain rate.
+        const core::SymTensor3 e = strain_rate.deviator();
+        const double rate = std::sqrt(2.0 / 3.0 * e.contract(e));
+        const double sigma_y0 = model.strength.yield_stress(s.plastic_strain, rate, s.temperature);
+        if (vm_trial > sigma_y0) {
+            // Radial return with hardening: solve vm_trial - 3 G d_eps = sigma_y(eps_p + d_eps) for d_eps
+            // (secant iterations from the perfectly plastic guess), so the stress lands on the yield
+            // surface of the end of the step, not of its start.
+            const double three_g = 3.0 * props.shear_modulus;
+            auto residual = [&](double d) {
+                return vm_trial - three_g * d - model.strength.yield_stress(s.plastic_strain + d, rate, s.temperature);
+            };
+            const double d_max = (vm_trial - sigma_y0) / three_g;  // perfectly plastic: residual(d_max) <= 0
+            double d0 = 0.0, r0 = vm_trial - sigma_y0;
+            double d1 = d_max, r1 = residual(d1);
+            for (int it = 0; it < 30 && std::abs(r1) > 1e-10 * vm_trial && r1 != r0; ++it) {
+                const double d2 = std::clamp(d1 - r1 * (d1 - d0) / (r1 - r0), 0.0, d_max);
+                d0 = d1;
+                r0 = r1;
+                d1 = d2;
+                r1 = residual(d1);
+            }
+            const double d_eps = d1;
+            const double sigma_y = vm_trial - three_g * d_eps;
+            next.deviatoric_stress = trial * (sigma_y / vm_trial);  // eq. (32)
+            next.plastic_strain = s.plastic_strain + d_eps;
+            next.plastic_strain_rate = dt > 0.0 ? d_eps / dt : 0.0;
+            if (props.adiabatic_heating && props.specific_heat > 0.0)
+                next.temperature = s.temperature + props.taylor_quinney * sigma_y * d_eps / (density * props.specific_heat);
+            if (model.failure_enabled) {
+                const double vm = next.deviatoric_stress.von_mises();
+                const double triaxiality = vm > 0.0 ? -pressure / vm : 0.0;
+                const double eps_f = model.failure.failure_strain(triaxiality, next.plastic_strain_rate, s.temperature);
+                next.damage = std::min(1.0, s.damage + d_eps / eps_f);  // eq. (36)
+                if (next.damage >= 1.0) next.deviatoric_stress = core::SymTensor3::zero();
+            }
+        }
+    }
+    return next;
+}
+
+}  // namespace grit::material

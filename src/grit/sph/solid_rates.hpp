@@ -1,0 +1,51 @@
+// The solid SPH sums: density rate (first seed paper eq. 28), acceleration with pressure, deviatoric
+// stress, artificial viscosity and artificial stress (eq. 29), strain-rate and spin tensors (eq. 31),
+// and the specific internal energy rate.
+#pragma once
+
+#include <vector>
+
+#include "grit/core/sym_tensor.hpp"
+#include "grit/material/solid_model.hpp"
+#include "grit/neighbors/neighbor_list.hpp"
+#include "grit/particles/sph_particles.hpp"
+#include "grit/sph/fluid_rates.hpp"
+#include "grit/sph/kernels.hpp"
+
+namespace grit::sph {
+
+/// Per-step scratch of the solid sums (recomputed each step, never sorted).
+struct SolidWorkspace {
+    std::vector<core::SymTensor3> strain_rate;        ///< eq. (31) [1/s]
+    std::vector<material::Spin> spin;                 ///< eq. (31) [1/s]
+    std::vector<core::SymTensor3> artificial_stress;  ///< R of Gray et al. (2001) [m^5/(kg s^2)]
+    std::vector<double> energy_rate;                  ///< de/dt [W/kg]
+};
+
+template <int Dim>
+struct SolidRateParameters {
+    core::Vec<Dim> gravity = core::Vec<Dim>::zero();
+    double artificial_stress = 0.3;  ///< epsilon of Gray et al. (2001); 0 switches it off
+    double artificial_stress_exponent = 4.0;  ///< n
+    double spacing = 0.0;            ///< dx, for f_ab = W(r)/W(dx)
+    std::vector<PairCoefficients> materials;
+};
+
+/// Fills density_rate and acceleration of every solid particle (fixed ones too: their acceleration
+/// is ignored by the integrator) and the workspace's strain rate, spin and energy rate. Pressure and
+/// artificial viscosity act between a solid particle and every neighbour (fluid-solid interaction is
+/// SPH interaction); deviatoric stress, artificial stress and the strain rate only between solids.
+/// Reads deviatoric_stress from the registry and p/rho^2, m/rho from `sph` (prepare_sph_workspace).
+template <int Dim>
+void compute_solid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                         const Kernel<Dim>& kernel, const SolidRateParameters<Dim>& parameters,
+                         const FluidWorkspace& sph, SolidWorkspace& workspace);
+
+extern template void compute_solid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
+                                            const Kernel<2>&, const SolidRateParameters<2>&, const FluidWorkspace&,
+                                            SolidWorkspace&);
+extern template void compute_solid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
+                                            const Kernel<3>&, const SolidRateParameters<3>&, const FluidWorkspace&,
+                                            SolidWorkspace&);
+
+}  // namespace grit::sph
