@@ -588,6 +588,17 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.probes.push_back(std::move(p));
     }
 
+    if (top.has("crater")) {
+        const Section crater = top.section("crater");
+        if (dim != 2) crater.fail("surface", "crater analysis is 2D so far");
+        if (c.solids.empty()) throw InputError("key 'crater': a crater needs a [[solid]]");
+        c.has_crater = true;
+        c.crater_surface = crater.number("surface");
+        c.crater_x_min = crater.number("x_min");
+        c.crater_x_max = crater.number("x_max");
+        if (c.crater_x_max <= c.crater_x_min + dx) crater.fail("x_max", "must exceed x_min by more than a spacing [m]");
+    }
+
     const Section domain = top.section("domain");
     c.domain_min = domain.vector("min", dim, "[m]");
     c.domain_max = domain.vector("max", dim, "[m]");

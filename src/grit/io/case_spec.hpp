@@ -98,6 +98,9 @@ struct CaseSpec {
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
     std::vector<ProbeSpec> probes;
+
+    bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (2D)
+    double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
 };
 
 }  // namespace grit::io

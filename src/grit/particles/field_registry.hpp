@@ -137,6 +137,11 @@ public:
         return *f;
     }
 
+    template <class T>
+    const Field<T>& get(const std::string& name) const {
+        return const_cast<FieldRegistry*>(this)->get<T>(name);
+    }
+
     bool has(const std::string& name) const { return index_.count(name) != 0; }
     Index size() const noexcept { return size_; }
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "grit/analysis/crater.hpp"
 #include "grit/analysis/probes.hpp"
 #include "grit/boundary/wall_pressure.hpp"
 #include "grit/core/error.hpp"
@@ -536,8 +537,40 @@ void Simulation<Dim>::write_output() {
     const auto d = analysis::compute_diagnostics(particles_);
     std::vector<double> row = {time_, static_cast<double>(step_), dt_, d.kinetic_energy, d.mass, mass_in_, mass_out_,
                                d.max_velocity, static_cast<double>(particles_.size())};
+    if (has_solids_) {
+        const SolidMeasures s = solid_measures();
+        row.insert(row.end(), {eroded_mass_, s.max_plastic_strain, s.internal_energy});
+        if (spec_.has_crater) {
+            row.insert(row.end(), {s.crater.depth, s.crater.width});
+            std::ofstream out(options_.output_dir / "crater.csv");
+            out << "# surface profile at t = " << fmt::format("{:.9g}", time_) << " s\nx,surface\n";
+            for (std::size_t b = 0; b < s.crater.x.size(); ++b)
+                out << fmt::format("{:.9g},{:.9g}\n", s.crater.x[b], s.crater.surface[b]);
+        }
+    }
     for (std::size_t k = 0; k < spec_.probes.size(); ++k) row.push_back(probe(k));
     series_->write_row(row);
+}
+
+template <int Dim>
+typename Simulation<Dim>::SolidMeasures Simulation<Dim>::solid_measures() const {
+    SolidMeasures out;
+    if (!has_solids_) return out;
+    const auto& f = particles_.fields();
+    const double* eps_p = f.template get<double>("plastic_strain").data();
+    const double* e = f.template get<double>("specific_energy").data();
+    const double* m = particles_.mass();
+    const std::int32_t* ph = particles_.phase();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    out.max_plastic_strain =
+        parallel::max(particles_.size(), 0.0, [&](Index i) { return ph[i] == solid ? eps_p[i] : 0.0; });
+    out.internal_energy = parallel::sum(particles_.size(), 0.0, [&](Index i) { return ph[i] == solid ? m[i] * e[i] : 0.0; });
+    if constexpr (Dim == 2) {
+        if (spec_.has_crater)
+            out.crater = analysis::analyse_crater(
+                particles_, {spec_.crater_surface, spec_.crater_x_min, spec_.crater_x_max}, spacing_);
+    }
+    return out;
 }
 
 template <int Dim>
@@ -561,6 +594,16 @@ RunSummary Simulation<Dim>::summarize(double wall_time) const {
         s.probe_values.push_back(probe(k));
     }
     s.stages = pipeline_.timers();
+    s.has_solids = has_solids_;
+    if (has_solids_) {
+        const SolidMeasures m = solid_measures();
+        s.eroded_mass = eroded_mass_;
+        s.max_plastic_strain = m.max_plastic_strain;
+        s.internal_energy = m.internal_energy;
+        s.has_crater = spec_.has_crater;
+        s.crater_depth = m.crater.depth;
+        s.crater_width = m.crater.width;
+    }
     return s;
 }
 
@@ -586,6 +629,15 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& stat
     j["mass_in"] = s.mass_in;
     j["mass_out"] = s.mass_out;
     j["max_velocity"] = s.max_velocity;
+    if (s.has_solids) {
+        j["eroded_mass"] = s.eroded_mass;
+        j["max_plastic_strain"] = s.max_plastic_strain;
+        j["internal_energy"] = s.internal_energy;
+        if (s.has_crater) {
+            j["crater_depth"] = s.crater_depth;
+            j["crater_width"] = s.crater_width;
+        }
+    }
     j["momentum"] = s.momentum;
     for (std::size_t k = 0; k < s.probe_names.size(); ++k) {
         const double v = s.probe_values[k];
@@ -606,6 +658,10 @@ RunSummary Simulation<Dim>::run() {
         pvd_ = std::make_unique<io::PvdWriter>(options_.output_dir / (spec_.name + ".pvd"));
         std::vector<std::string> columns = {"time",     "step",     "dt",           "kinetic_energy", "mass_total",
                                             "mass_in",  "mass_out", "max_velocity", "particles"};
+        if (has_solids_) {
+            columns.insert(columns.end(), {"eroded_mass", "max_plastic_strain", "internal_energy"});
+            if (spec_.has_crater) columns.insert(columns.end(), {"crater_depth", "crater_width"});
+        }
         for (const auto& p : spec_.probes) columns.push_back(p.name);
         series_ = std::make_unique<io::SeriesWriter>(options_.output_dir / "series.csv", columns);
     }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/analysis/crater.hpp"
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/boundary/jet_inlet.hpp"
 #include "grit/core/timer.hpp"
@@ -38,8 +39,9 @@ struct RunSummary {
     double particle_steps_per_second = 0.0;
     double pair_interactions_per_second = 0.0;
     double kinetic_energy = 0.0, mass_total = 0.0, mass_in = 0.0, mass_out = 0.0, max_velocity = 0.0;
-    bool has_solids = false;
-    double eroded_mass = 0.0, max_plastic_strain = 0.0;
+    bool has_solids = false, has_crater = false;
+    double eroded_mass = 0.0, max_plastic_strain = 0.0, internal_energy = 0.0;
+    double crater_depth = 0.0, crater_width = 0.0;
     std::vector<double> momentum;
     std::vector<std::string> probe_names;
     std::vector<double> probe_values;
@@ -88,6 +90,12 @@ private:
     void update_neighbors(bool force);
     void compute_time_step();
     void register_solid_fields();
+    struct SolidMeasures {
+        double max_plastic_strain = 0.0;
+        double internal_energy = 0.0;  ///< sum of m e over solids [J]
+        analysis::CraterProfile crater;
+    };
+    SolidMeasures solid_measures() const;
     void update_solid_stress();
     void remove_failed_solids();
     /// True for particles the integrator moves: fluid, and solids that are not clamped.

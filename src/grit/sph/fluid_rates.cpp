@@ -34,6 +34,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const double delta = prm.density_diffusion;
     const Vec g = prm.gravity;
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
 
     parallel::for_each(n, [&](Index a) {
         if (phase[a] != fluid) return;
@@ -72,7 +73,13 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
                                   0.5 * (ca.beta + cb.beta) * phi * phi) *
                                  2.0 * inv_rho_sum;
-            const double along_x = m[b] * (-(p_term_a + p_term[b]) - pi_ab) * f;
+            // Across a fluid-solid interface (density ratio up to 9) the pressure term takes the
+            // multi-phase form (p_a + p_b) / (rho_a rho_b) of Colagrossi & Landrini (2003); still
+            // antisymmetric, so momentum is conserved.
+            const double rho_b = rho[b];
+            const double pressure = phase[b] == solid ? (p_term_a * rho_a / rho_b + p_term[b] * rho_b / rho_a)
+                                                      : (p_term_a + p_term[b]);
+            const double along_x = m[b] * (-pressure - pi_ab) * f;
 
             // Laminar viscosity, eq. (25) in the form of Lo & Shao (2002), along v_ab.
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);

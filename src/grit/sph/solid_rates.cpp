@@ -119,15 +119,19 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double volume_b = volume[b];
             const PairCoefficients& cb = coef[mat[b]];
 
-            if (phase[b] != solid) continuity += volume_b * vx * f;  // eq. (28), non-solid neighbours
+            if (phase[b] == static_cast<std::int32_t>(Phase::wall)) continuity += volume_b * vx * f;  // eq. (28) with walls
 
             // Pressure and artificial viscosity with every neighbour (eq. 29, first sum).
             const double phi = h * std::min(vx, 0.0) / (r2 + eps_h2);
             const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
                                   0.5 * (ca.beta + cb.beta) * phi * phi) /
                                  (0.5 * (rho_a + rho[b]));
-            dv += xab * (m[b] * (-(p_term_a + p_term[b]) - pi_ab) * f);
-            work_rate += 0.5 * m[b] * (p_term_a + p_term[b] + pi_ab) * vx * f;
+            // Multi-phase pressure form across a fluid-solid interface, as in the fluid sums.
+            const double pressure = phase[b] != solid && phase[b] != static_cast<std::int32_t>(Phase::wall)
+                                        ? (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a)
+                                        : (p_term_a + p_term[b]);
+            dv += xab * (m[b] * (-pressure - pi_ab) * f);
+            work_rate += 0.5 * m[b] * (pressure + pi_ab) * vx * f;
 
             if (phase[b] != solid) continue;
             // Deviatoric stress (eq. 29, second sum) and artificial stress, between solids.

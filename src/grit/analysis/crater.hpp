@@ -1,0 +1,30 @@
+// Crater analysis of an eroded solid surface (2D): the surface profile, crater depth C_d and width C_w.
+#pragma once
+
+#include <vector>
+
+#include "grit/particles/sph_particles.hpp"
+
+namespace grit::analysis {
+
+/// Where the original surface is and which part of it to profile.
+struct CraterRegion {
+    double surface = 0.0;          ///< original surface height y0 [m]
+    double x_min = 0.0, x_max = 0.0;  ///< profiled range along x [m]
+};
+
+struct CraterProfile {
+    std::vector<double> x;        ///< bin centres [m]
+    std::vector<double> surface;  ///< surface height in each bin [m]; NaN where no solid is left
+    double depth = 0.0;           ///< C_d: deepest point below the original surface [m] (>= 0)
+    double width = 0.0;           ///< C_w: width of the crater at the original surface level [m]
+};
+
+/// Profile of the solid's top surface in bins of width `spacing`: in each bin, the highest solid
+/// particle centre plus half a spacing (its edge). C_d = y0 - min(surface), or 0. C_w: from the deepest
+/// bin, the profile is followed left and right to where it first rises back to y0 - spacing/2 (the
+/// original surface, less the lattice's half spacing); the crossings are interpolated linearly and C_w
+/// is their distance (0 when there is no crater deeper than half a spacing).
+CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
+
+}  // namespace grit::analysis
