@@ -536,6 +536,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         o.key = s.path();
         o.min = s.vector("min", dim, "[m]");
         o.max = s.vector("max", dim, "[m]");
+        o.velocity = s.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
         for (int k = 0; k < dim; ++k)
             if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
         c.clamps.push_back(std::move(o));

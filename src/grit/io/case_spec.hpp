@@ -44,10 +44,12 @@ struct InletSpec {
     double start = 0.0, stop = 1e300;  ///< emission window [s]
 };
 
-/// An outlet: a box that removes the fluid particles entering it and books their mass.
+/// An outlet (a box that removes the fluid particles entering it and books their mass), or a clamp
+/// (a box whose solid particles move at a prescribed velocity, at rest by default).
 struct OutletSpec {
     std::string key;
     std::vector<double> min, max;
+    std::vector<double> velocity;  ///< clamps only [m/s]
 };
 
 /// A probe written as a column of series.csv.
@@ -94,7 +96,7 @@ struct CaseSpec {
     std::vector<BlockSpec> fluids;
     std::vector<BlockSpec> solids;
     std::vector<BlockSpec> walls;
-    std::vector<OutletSpec> clamps;  ///< boxes: solid particles inside at the start are held fixed
+    std::vector<OutletSpec> clamps;  ///< boxes: solid particles inside at the start move at the clamp's velocity
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
     std::vector<ProbeSpec> probes;

@@ -27,11 +27,13 @@ public:
           pressure_(&fields_.add<double>("pressure", 0.0, true)),
           mass_(&fields_.add<double>("mass", 0.0, true)),
           phase_(&fields_.add<std::int32_t>("phase", 0, true)),
-          material_(&fields_.add<std::int32_t>("material", 0, true)) {}
+          material_(&fields_.add<std::int32_t>("material", 0, true)),
+          id_(&fields_.add<std::int32_t>("id", -1, true)) {}
 
-    SphParticles(const SphParticles& o) : fields_(o.fields_) { rebind(); }
+    SphParticles(const SphParticles& o) : fields_(o.fields_), next_id_(o.next_id_) { rebind(); }
     SphParticles& operator=(const SphParticles& o) {
         fields_ = o.fields_;
+        next_id_ = o.next_id_;
         rebind();
         return *this;
     }
@@ -40,10 +42,12 @@ public:
     const FieldRegistry& fields() const noexcept { return fields_; }
     Index size() const noexcept { return fields_.size(); }
 
-    /// Grows the set by n particles (fields take their fill values) and returns the first new index.
+    /// Grows the set by n particles (fields take their fill values, `id` the next free identifiers) and
+    /// returns the first new index.
     Index append(Index n) {
         const Index first = size();
         fields_.resize(first + n);
+        for (Index i = first; i < first + n; ++i) (*id_)[i] = next_id_++;
         return first;
     }
     /// Reorders and/or removes particles: new[i] = old[source[i]].
@@ -62,6 +66,8 @@ public:
     double* mass() noexcept { return mass_->data(); }
     std::int32_t* phase() noexcept { return phase_->data(); }
     std::int32_t* material() noexcept { return material_->data(); }
+    /// A particle's identifier: unique, kept through sorting and removal (for tracking particles).
+    const std::int32_t* id() const noexcept { return id_->data(); }
 
     const Vec* position() const noexcept { return position_->data(); }
     const Vec* velocity() const noexcept { return velocity_->data(); }
@@ -95,6 +101,7 @@ private:
         mass_ = &fields_.get<double>("mass");
         phase_ = &fields_.get<std::int32_t>("phase");
         material_ = &fields_.get<std::int32_t>("material");
+        id_ = &fields_.get<std::int32_t>("id");
     }
 
     FieldRegistry fields_;
@@ -109,6 +116,8 @@ private:
     Field<double>* mass_;
     Field<std::int32_t>* phase_;
     Field<std::int32_t>* material_;
+    Field<std::int32_t>* id_;
+    std::int32_t next_id_ = 0;
 };
 
 }  // namespace grit::particles

@@ -160,8 +160,8 @@ void Simulation<Dim>::build_particles() {
             for (const auto& c : spec_.clamps)
                 if (inside<Dim>(xs[i], c.min, c.max)) {
                     fixed[i] = 1;
-                    particles_.velocity()[i] = Vec::zero();
-                    particles_.velocity_half()[i] = Vec::zero();
+                    particles_.velocity()[i] = to_vec<Dim>(c.velocity);
+                    particles_.velocity_half()[i] = to_vec<Dim>(c.velocity);
                 }
         }
         for (const auto& c : spec_.clamps) {
@@ -234,7 +234,7 @@ void Simulation<Dim>::integrate_predict() {
     parallel::for_each(particles_.size(), [&](Index i) {
         if (ph[i] != fluid && ph[i] != solid) return;
         rho[i] = rho_half[i] + drho[i] * half;
-        if (fixed && fixed[i]) return;  // clamped solids stay at rest
+        if (fixed && fixed[i]) return;  // clamped solids keep their prescribed velocity
         v[i] = v_half[i] + a[i] * half;
     });
 }
@@ -258,7 +258,10 @@ void Simulation<Dim>::integrate_update() {
         rho_half[i] += drho[i] * kick;
         // Between steps, velocity and density show the half-step state (outputs, diagnostics).
         rho[i] = rho_half[i];
-        if (fixed && fixed[i]) return;
+        if (fixed && fixed[i]) {  // clamped: moves at its prescribed velocity
+            x[i] += v_half[i] * dt;
+            return;
+        }
         v_half[i] += a[i] * kick;
         x[i] += v_half[i] * dt;
         v[i] = v_half[i];

@@ -1,0 +1,96 @@
+// Elastic solids: Hooke's law in a tension test, and the energy budget of an elastic impact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "support/case_fixture.hpp"
+
+using grit::testing::in_memory;
+using grit::testing::load_case;
+
+namespace {
+
+struct Sample {
+    double strain, stress;
+};
+
+}  // namespace
+
+// A plane-strain bar with free sides: sigma_xx = E / (1 - nu^2) eps_xx (E = 2.0e6 Pa, nu = 0.3975).
+// The slope of sigma_xx against eps_xx in the middle third over the loading (10-50 ms) is fitted, so
+// the small stress waves from the clamps' sudden start average out. Tolerance 2 %. No clumping: the
+// nearest-neighbour distance stays above half a spacing.
+TEST(Solids, TensionFollowsHookesLaw) {
+    grit::sim::Simulation<2> sim(load_case("tension_bar_2d/case.toml"), in_memory());
+    auto& ps = sim.particles();
+    std::map<std::int32_t, double> x0;
+    for (grit::Index i = 0; i < ps.size(); ++i) x0[ps.id()[i]] = ps.position()[i][0];
+    const double expected_modulus = 2.0e6 / (1.0 - 0.3975 * 0.3975);
+    std::vector<Sample> samples;
+    for (double t = 0.01; t <= 0.05 + 1e-12; t += 0.002) {
+        sim.advance_to(t);
+        const auto& tau = ps.fields().get<grit::core::SymTensor3>("deviatoric_stress");
+        // Least-squares slope of displacement against initial x over the middle third: eps_xx.
+        double sx = 0, su = 0, sxx = 0, sxu = 0, stress = 0;
+        int n = 0;
+        for (grit::Index i = 0; i < ps.size(); ++i) {
+            const double a = x0[ps.id()[i]];
+            if (std::abs(a) > 0.05 / 3.0) continue;
+            const double u = ps.position()[i][0] - a;
+            sx += a;
+            su += u;
+            sxx += a * a;
+            sxu += a * u;
+            stress += tau[i].xx - ps.pressure()[i];
+            ++n;
+        }
+        const double strain = (n * sxu - sx * su) / (n * sxx - sx * sx);
+        samples.push_back({strain, stress / n});
+    }
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& s : samples) {
+        sx += s.strain;
+        sy += s.stress;
+        sxx += s.strain * s.strain;
+        sxy += s.strain * s.stress;
+    }
+    const double m = static_cast<double>(samples.size());
+    const double modulus = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+    std::printf("final strain %.4f, stress %.1f Pa; fitted modulus %.4g Pa vs E/(1-nu^2) = %.4g Pa (%+.2f %%)\n",
+                samples.back().strain, samples.back().stress, modulus, expected_modulus,
+                100.0 * (modulus / expected_modulus - 1.0));
+    EXPECT_GT(samples.back().strain, 0.008);
+    EXPECT_NEAR(modulus, expected_modulus, 0.02 * expected_modulus);
+    // No clumping.
+    double nearest = 1e9;
+    for (grit::Index i = 0; i < ps.size(); ++i)
+        for (grit::Index j = i + 1; j < ps.size(); ++j)
+            nearest = std::min(nearest, grit::core::norm(ps.position()[i] - ps.position()[j]));
+    EXPECT_GT(nearest, 0.5e-3);
+}
+
+// Two elastic discs collide and separate: kinetic + internal energy (elastic and dissipated, booked in
+// the specific internal energy) stays within 2 % of the initial kinetic energy.
+TEST(Solids, ElasticImpactEnergyBudget) {
+    grit::sim::Simulation<2> sim(load_case("elastic_impact_2d/case.toml"), in_memory());
+    auto& ps = sim.particles();
+    auto total_energy = [&] {
+        const auto& e = ps.fields().get<double>("specific_energy");
+        double sum = 0.0;
+        for (grit::Index i = 0; i < ps.size(); ++i)
+            sum += ps.mass()[i] * (0.5 * grit::core::norm2(ps.velocity()[i]) + e[i]);
+        return sum;
+    };
+    const double e0 = total_energy();
+    double worst = 0.0, min_kinetic = 1e9;
+    for (double t = 2e-4; t <= 6e-3 + 1e-12; t += 2e-4) {
+        sim.advance_to(t);
+        worst = std::max(worst, std::abs(total_energy() / e0 - 1.0));
+        min_kinetic = std::min(min_kinetic, grit::analysis::compute_diagnostics(ps).kinetic_energy);
+    }
+    std::printf("initial energy %.4f J/m, largest budget error %.2f %%, least kinetic energy %.3f J/m\n", e0,
+                100.0 * worst, min_kinetic);
+    EXPECT_LT(min_kinetic, 0.1 * e0);  // the discs did stop and store the energy
+    EXPECT_LT(worst, 0.02);
+}
