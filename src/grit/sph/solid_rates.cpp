@@ -53,7 +53,37 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
         });
     }
-    const double w_dx = kernel.value(prm.spacing);
+    // Kernel gradient correction (Randles & Libersky 1996; second seed paper eq. 8), per solid particle:
+    // L = [sum_b V_b grad_a W_ab (x) (x_b - x_a)]^-1 over solid neighbours. With it, eq. (31) is exact
+    // for linear velocity fields and the stress divergence exact for linear stress fields, also at free
+    // surfaces, where plain sums see half a kernel and halve tangential derivatives (a bending plate
+    // then turns soft).
+    work.correction.assign(static_cast<std::size_t>(n), SymTensor3::identity());
+    SymTensor3* corr = work.correction.data();
+    parallel::for_each(n, [&](Index a) {
+        if (phase[a] != solid) return;
+        double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+        for (Index k = nl.begin(a); k < nl.end(a); ++k) {
+            const Index b = nbr[k];
+            if (phase[b] != solid) continue;
+            const Vec xab = x[a] - x[b];
+            const double f = kernel.gradient_factor(std::sqrt(core::norm2(xab)));
+            for (int i = 0; i < Dim; ++i)
+                for (int j = 0; j < Dim; ++j) mm[i][j] -= volume[b] * f * xab[i] * xab[j];
+        }
+        if constexpr (Dim == 2) {
+            const double det = mm[0][0] * mm[1][1] - mm[0][1] * mm[1][0];
+            if (std::abs(det) > 1e-6) corr[a] = {mm[1][1] / det, mm[0][0] / det, 1.0, -mm[0][1] / det, 0.0, 0.0};
+        } else {
+            Eigen::Matrix3d m3;
+            m3 << mm[0][0], mm[0][1], mm[0][2], mm[1][0], mm[1][1], mm[1][2], mm[2][0], mm[2][1], mm[2][2];
+            if (std::abs(m3.determinant()) > 1e-6) {
+                const Eigen::Matrix3d inv = m3.inverse();
+                corr[a] = {inv(0, 0), inv(1, 1), inv(2, 2), inv(0, 1), inv(1, 2), inv(2, 0)};
+            }
+        }
+    });
+    const double inv_w_dx = 1.0 / kernel.value(prm.spacing);
     const double as_n = prm.artificial_stress_exponent;
 
     const double h = kernel.h;
@@ -71,37 +101,9 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const SymTensor3 art_a = art[a];
         const PairCoefficients& ca = coef[mat[a]];
 
-        // Kernel gradient correction for the velocity gradient (Randles & Libersky 1996; second seed
-        // paper eq. 8): L = [sum_b V_b grad_a W_ab (x) (x_b - x_a)]^-1 over solid neighbours, so that eq.
-        // (31) is exact for linear velocity fields, also at free surfaces, where the plain sum sees half a
-        // kernel and underestimates tangential strain rates by half (a bending plate turns soft).
-        double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-        for (Index k = nl.begin(a); k < nl.end(a); ++k) {
-            const Index b = nbr[k];
-            if (phase[b] != solid) continue;
-            const Vec xab = xa - x[b];
-            const double f = kernel.gradient_factor(std::sqrt(core::norm2(xab)));
-            for (int i = 0; i < Dim; ++i)
-                for (int j = 0; j < Dim; ++j) mm[i][j] -= volume[b] * f * xab[i] * xab[j];
-        }
-        double corr[3][3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
-        if constexpr (Dim == 2) {
-            const double det = mm[0][0] * mm[1][1] - mm[0][1] * mm[1][0];
-            if (std::abs(det) > 1e-6) {
-                corr[0][0] = mm[1][1] / det;
-                corr[1][1] = mm[0][0] / det;
-                corr[0][1] = -mm[0][1] / det;
-                corr[1][0] = -mm[1][0] / det;
-            }
-        } else {
-            Eigen::Matrix3d m3;
-            m3 << mm[0][0], mm[0][1], mm[0][2], mm[1][0], mm[1][1], mm[1][2], mm[2][0], mm[2][1], mm[2][2];
-            if (std::abs(m3.determinant()) > 1e-6) {
-                const Eigen::Matrix3d inv = m3.inverse();
-                for (int i = 0; i < 3; ++i)
-                    for (int j = 0; j < 3; ++j) corr[i][j] = inv(i, j);
-            }
-        }
+        const SymTensor3 la = corr[a];
+        // sigma_a / rho_a^2 with sigma = -p I + tau.
+        const SymTensor3 sigma_a = tau_a - SymTensor3::identity() * p_term_a;
 
         Vec dv = Vec::zero();
         double continuity = 0.0, work_rate = 0.0;
@@ -119,37 +121,61 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double volume_b = volume[b];
             const PairCoefficients& cb = coef[mat[b]];
 
-            if (phase[b] == static_cast<std::int32_t>(Phase::wall)) continuity += volume_b * vx * f;  // eq. (28) with walls
-
-            // Pressure and artificial viscosity with every neighbour (eq. 29, first sum).
+            // Artificial viscosity with every neighbour (eq. 29), along the plain kernel gradient.
             const double phi = h * std::min(vx, 0.0) / (r2 + eps_h2);
             const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
                                   0.5 * (ca.beta + cb.beta) * phi * phi) /
                                  (0.5 * (rho_a + rho[b]));
-            // Multi-phase pressure form across a fluid-solid interface, as in the fluid sums.
-            const double pressure = phase[b] != solid && phase[b] != static_cast<std::int32_t>(Phase::wall)
-                                        ? (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a)
-                                        : (p_term_a + p_term[b]);
-            dv += xab * (m[b] * (-pressure - pi_ab) * f);
-            work_rate += 0.5 * m[b] * (pressure + pi_ab) * vx * f;
+            dv += xab * (-m[b] * pi_ab * f);
+            work_rate += 0.5 * m[b] * pi_ab * vx * f;
 
-            if (phase[b] != solid) continue;
-            // Deviatoric stress (eq. 29, second sum) and artificial stress, between solids.
-            SymTensor3 t = tau_a + tau[b] * (1.0 / (rho[b] * rho[b]));
-            if (eps_as > 0.0) {
-                const double fab = std::pow(kernel.value(r) / w_dx, as_n);
-                t += (art_a + art[b]) * fab;
+            if (phase[b] != solid) {
+                // Pressure from fluid and wall neighbours; the multi-phase form (p_a + p_b)/(rho_a rho_b)
+                // of Colagrossi & Landrini (2003) across a fluid-solid interface.
+                const bool wall = phase[b] == static_cast<std::int32_t>(Phase::wall);
+                const double pressure = wall ? (p_term_a + p_term[b])
+                                             : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
+                dv += xab * (-m[b] * pressure * f);
+                work_rate += 0.5 * m[b] * pressure * vx * f;
+                if (wall) continuity += volume_b * vx * f;  // eq. (28) against walls
+                continue;
             }
+            // Between solids, eq. (29) with the corrected kernel gradient of each particle:
+            // sum_b m_b [sigma_a/rho_a^2 L_a + sigma_b/rho_b^2 L_b] grad W (antisymmetric per pair, so
+            // momentum is conserved), plus the artificial stress.
             const double gx = xab[0] * f, gy = xab[1] * f, gz = Dim == 3 ? xab[Dim - 1] * f : 0.0;
-            dv[0] += m[b] * (t.xx * gx + t.xy * gy + t.zx * gz);
-            dv[1] += m[b] * (t.xy * gx + t.yy * gy + t.yz * gz);
-            if constexpr (Dim == 3) dv[Dim - 1] += m[b] * (t.zx * gx + t.yz * gy + t.zz * gz);
+            const SymTensor3& lb = corr[b];
+            const double cx = la.xx * gx + la.xy * gy + la.zx * gz;
+            const double cy = la.xy * gx + la.yy * gy + la.yz * gz;
+            const double cz = la.zx * gx + la.yz * gy + la.zz * gz;
+            const double dx_ = lb.xx * gx + lb.xy * gy + lb.zx * gz;
+            const double dy_ = lb.xy * gx + lb.yy * gy + lb.yz * gz;
+            const double dz_ = lb.zx * gx + lb.yz * gy + lb.zz * gz;
+            const SymTensor3 sigma_b = (tau[b] - SymTensor3::identity() * p[b]) * (1.0 / (rho[b] * rho[b]));
+            double fx = sigma_a.xx * cx + sigma_a.xy * cy + sigma_a.zx * cz + sigma_b.xx * dx_ + sigma_b.xy * dy_ + sigma_b.zx * dz_;
+            double fy = sigma_a.xy * cx + sigma_a.yy * cy + sigma_a.yz * cz + sigma_b.xy * dx_ + sigma_b.yy * dy_ + sigma_b.yz * dz_;
+            double fz = sigma_a.zx * cx + sigma_a.yz * cy + sigma_a.zz * cz + sigma_b.zx * dx_ + sigma_b.yz * dy_ + sigma_b.zz * dz_;
+            if (eps_as > 0.0) {
+                const double ratio = kernel.value(r) * inv_w_dx;
+                const double ratio2 = ratio * ratio;
+                const double fab = as_n == 4.0 ? ratio2 * ratio2 : std::pow(ratio, as_n);
+                const SymTensor3 ra = (art_a + art[b]) * fab;
+                fx += ra.xx * gx + ra.xy * gy + ra.zx * gz;
+                fy += ra.xy * gx + ra.yy * gy + ra.yz * gz;
+                fz += ra.zx * gx + ra.yz * gy + ra.zz * gz;
+            }
+            dv[0] += m[b] * fx;
+            dv[1] += m[b] * fy;
+            if constexpr (Dim == 3) dv[Dim - 1] += m[b] * fz;
+            // The matching internal-energy rate, -m_b sigma_a/rho_a^2 : (v_ab (x) L_a grad W): with the
+            // momentum above, kinetic + internal energy is conserved pair by pair.
+            const double vxa = vab[0], vya = vab[1], vza = Dim == 3 ? vab[Dim - 1] : 0.0;
+            work_rate -= m[b] * (sigma_a.xx * vxa * cx + sigma_a.yy * vya * cy + sigma_a.zz * vza * cz +
+                                 sigma_a.xy * (vxa * cy + vya * cx) + sigma_a.yz * (vya * cz + vza * cy) +
+                                 sigma_a.zx * (vza * cx + vxa * cz));
 
-            // Strain rate and spin, eq. (31), with v_ba = -v_ab and the corrected kernel gradient L grad W.
+            // Strain rate and spin, eq. (31), with v_ba = -v_ab and the corrected gradient L_a grad W.
             const double ux = -vab[0] * volume_b, uy = -vab[1] * volume_b, uz = Dim == 3 ? -vab[Dim - 1] * volume_b : 0.0;
-            const double cx = corr[0][0] * gx + corr[0][1] * gy + corr[0][2] * gz;
-            const double cy = corr[1][0] * gx + corr[1][1] * gy + corr[1][2] * gz;
-            const double cz = corr[2][0] * gx + corr[2][1] * gy + corr[2][2] * gz;
             grad_v_sym.xx += ux * cx;
             grad_v_sym.yy += uy * cy;
             grad_v_sym.zz += uz * cz;
@@ -160,16 +186,12 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             w.yz += 0.5 * (uy * cz - uz * cy);
             w.zx += 0.5 * (uz * cx - ux * cz);
         }
-        // Eq. (28) between solids with the corrected gradient: rho_dot = -rho tr(grad v). The plain sum
-        // sees half a kernel at a free surface and would halve the volumetric stiffness of the surface
-        // layer, which carries most of a bending stress.
         drho[a] = rho_a * (continuity - grad_v_sym.trace());
         acc[a] = dv + g;
         strain_rate[a] = grad_v_sym;
         spin[a] = w;
-        // Internal energy: pressure work and artificial-viscosity heating from the pair sums, plus the
-        // deviatoric work tau : eps_dot / rho.
-        de[a] = work_rate + tau[a].contract(grad_v_sym) / rho_a;
+        // Internal energy: work of the stresses and artificial-viscosity heating.
+        de[a] = work_rate;
     });
 }
 

@@ -20,6 +20,7 @@ struct SolidWorkspace {
     std::vector<material::Spin> spin;                 ///< eq. (31) [1/s]
     std::vector<core::SymTensor3> artificial_stress;  ///< R of Gray et al. (2001) [m^5/(kg s^2)]
     std::vector<double> energy_rate;                  ///< de/dt [W/kg]
+    std::vector<core::SymTensor3> correction;         ///< kernel gradient correction L (symmetric)
 };
 
 template <int Dim>
