@@ -404,6 +404,17 @@ private:
     std::vector<material::Material>& used_;
 };
 
+/// An axis-aligned box `min`/`max` (outlets, clamps).
+OutletSpec read_box(const Section& s, int dim) {
+    OutletSpec o;
+    o.key = s.path();
+    o.min = s.vector("min", dim, "[m]");
+    o.max = s.vector("max", dim, "[m]");
+    for (int k = 0; k < dim; ++k)
+        if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
+    return o;
+}
+
 ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
     ShapeSpec shape;
     std::vector<std::string> kinds = {"box", "disc", "sphere"};
@@ -532,13 +543,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.solids.push_back(std::move(b));
     }
     for (const Section& s : top.sections("clamp")) {
-        OutletSpec o;
-        o.key = s.path();
-        o.min = s.vector("min", dim, "[m]");
-        o.max = s.vector("max", dim, "[m]");
+        OutletSpec o = read_box(s, dim);
         o.velocity = s.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
-        for (int k = 0; k < dim; ++k)
-            if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
         c.clamps.push_back(std::move(o));
     }
     if (!c.clamps.empty() && c.solids.empty()) throw InputError("key 'clamp': clamps hold solids, and the case has no [[solid]]");
@@ -555,12 +561,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.walls.push_back(std::move(b));
     }
     for (const Section& s : top.sections("outlet")) {
-        OutletSpec o;
-        o.key = s.path();
-        o.min = s.vector("min", dim, "[m]");
-        o.max = s.vector("max", dim, "[m]");
-        for (int k = 0; k < dim; ++k)
-            if (o.max[k] <= o.min[k]) s.fail("max", "must exceed min in every direction");
+        OutletSpec o = read_box(s, dim);
         c.outlets.push_back(std::move(o));
     }
     std::set<std::string> probe_names;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "grit/core/types.hpp"
@@ -50,23 +51,6 @@ void for_each_dynamic(Index n, F&& f) {
 
 inline constexpr Index reduction_block = 4096;
 
-/// Sum of f(i) over [0, n) in a thread-count-independent order (blocks of `reduction_block`).
-template <class T, class F>
-T sum(Index n, T zero, F&& f) {
-    const Index blocks = (n + reduction_block - 1) / reduction_block;
-    std::vector<T> partial(static_cast<std::size_t>(blocks), zero);
-#pragma omp parallel for schedule(static)
-    for (Index b = 0; b < blocks; ++b) {
-        T s = zero;
-        const Index end = std::min(n, (b + 1) * reduction_block);
-        for (Index i = b * reduction_block; i < end; ++i) s += f(i);
-        partial[static_cast<std::size_t>(b)] = s;
-    }
-    T total = zero;
-    for (const T& s : partial) total += s;
-    return total;
-}
-
 /// Reduction of f(i) over [0, n) with `combine`, in fixed blocks combined in a fixed order, so the
 /// result does not depend on the thread count even for non-associative combinations.
 template <class T, class F, class C>
@@ -83,6 +67,12 @@ T reduce(Index n, T identity, F&& f, C&& combine) {
     T total = identity;
     for (const T& s : partial) total = combine(total, s);
     return total;
+}
+
+/// Sum of f(i) over [0, n) in a thread-count-independent order (blocks of `reduction_block`).
+template <class T, class F>
+T sum(Index n, T zero, F&& f) {
+    return reduce(n, zero, std::forward<F>(f), [](T a, const T& b) { return a += b; });
 }
 
 /// Maximum of f(i) over [0, n); `lowest` when n == 0. Exact whatever the order.
