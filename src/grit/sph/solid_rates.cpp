@@ -44,15 +44,17 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     SymTensor3* art = work.artificial_stress.data();
     double* de = work.energy_rate.data();
 
-    // Artificial stress of each solid particle from its total stress sigma = -p I + tau.
+    // Per solid particle: sigma / rho^2 with sigma = -p I + tau (read by every pair), and the
+    // artificial stress from sigma.
     const double eps_as = prm.artificial_stress;
-    if (eps_as > 0.0) {
-        parallel::for_each(n, [&](Index i) {
-            if (phase[i] != solid) return;
-            const SymTensor3 sigma = tau[i] - SymTensor3::identity() * p[i];
-            art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
-        });
-    }
+    work.stress_term.assign(static_cast<std::size_t>(n), SymTensor3::zero());
+    SymTensor3* stress_term = work.stress_term.data();
+    parallel::for_each(n, [&](Index i) {
+        if (phase[i] != solid) return;
+        const SymTensor3 sigma = tau[i] - SymTensor3::identity() * p[i];
+        stress_term[i] = sigma * (1.0 / (rho[i] * rho[i]));
+        if (eps_as > 0.0) art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
+    });
     // Kernel gradient correction (Randles & Libersky 1996; second seed paper eq. 8), per solid particle:
     // L = [sum_b V_b grad_a W_ab (x) (x_b - x_a)]^-1 over solid neighbours. With it, eq. (31) is exact
     // for linear velocity fields and the stress divergence exact for linear stress fields, also at free
@@ -96,14 +98,11 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const Vec va = v[a];
         const double rho_a = rho[a];
         const double p_term_a = p_term[a];
-        const double inv_rho2_a = 1.0 / (rho_a * rho_a);
-        const SymTensor3 tau_a = tau[a] * inv_rho2_a;
         const SymTensor3 art_a = art[a];
         const PairCoefficients& ca = coef[mat[a]];
 
         const SymTensor3 la = corr[a];
-        // sigma_a / rho_a^2 with sigma = -p I + tau.
-        const SymTensor3 sigma_a = tau_a - SymTensor3::identity() * p_term_a;
+        const SymTensor3 sigma_a = stress_term[a];  // sigma_a / rho_a^2
 
         Vec dv = Vec::zero();
         double continuity = 0.0, work_rate = 0.0;
@@ -151,7 +150,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double dx_ = lb.xx * gx + lb.xy * gy + lb.zx * gz;
             const double dy_ = lb.xy * gx + lb.yy * gy + lb.yz * gz;
             const double dz_ = lb.zx * gx + lb.yz * gy + lb.zz * gz;
-            const SymTensor3 sigma_b = (tau[b] - SymTensor3::identity() * p[b]) * (1.0 / (rho[b] * rho[b]));
+            const SymTensor3& sigma_b = stress_term[b];
             double fx = sigma_a.xx * cx + sigma_a.xy * cy + sigma_a.zx * cz + sigma_b.xx * dx_ + sigma_b.xy * dy_ + sigma_b.zx * dz_;
             double fy = sigma_a.xy * cx + sigma_a.yy * cy + sigma_a.yz * cz + sigma_b.xy * dx_ + sigma_b.yy * dy_ + sigma_b.yz * dz_;
             double fz = sigma_a.zx * cx + sigma_a.yz * cy + sigma_a.zz * cz + sigma_b.zx * dx_ + sigma_b.yz * dy_ + sigma_b.zz * dz_;

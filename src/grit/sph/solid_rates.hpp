@@ -21,6 +21,7 @@ struct SolidWorkspace {
     std::vector<core::SymTensor3> artificial_stress;  ///< R of Gray et al. (2001) [m^5/(kg s^2)]
     std::vector<double> energy_rate;                  ///< de/dt [W/kg]
     std::vector<core::SymTensor3> correction;         ///< kernel gradient correction L (symmetric)
+    std::vector<core::SymTensor3> stress_term;        ///< sigma / rho^2 [m^5/(kg s^2)]
 };
 
 template <int Dim>
