@@ -347,16 +347,19 @@ void Simulation<Dim>::remove_failed_solids() {
 
 template <int Dim>
 void Simulation<Dim>::apply_boundaries() {
-    // Outlets and (with domain.on_exit = "remove") the domain's faces remove fluid and book its mass.
+    // Outlets and (with domain.on_exit = "remove") the domain's faces remove fluid and loose solid
+    // particles (debris). Fluid mass is booked as mass_out, solid mass as eroded mass.
     if (!spec_.outlets.empty() || spec_.remove_leaving) {
         const Vec* x = particles_.position();
         const double* m = particles_.mass();
         const std::int32_t* ph = particles_.phase();
-        const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+        const std::int32_t* fixed =
+            has_solids_ ? particles_.fields().template get<std::int32_t>("fixed").data() : nullptr;
+        const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
         const Index n = particles_.size();
         std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
         parallel::for_each(n, [&](Index i) {
-            if (ph[i] != fluid) return;
+            if (ph[i] != fluid && (ph[i] != solid || (fixed && fixed[i]))) return;
             bool out = spec_.remove_leaving && !inside<Dim>(x[i], spec_.domain_min, spec_.domain_max);
             for (const auto& o : spec_.outlets) out = out || inside<Dim>(x[i], o.min, o.max);
             gone[static_cast<std::size_t>(i)] = out;
@@ -366,10 +369,12 @@ void Simulation<Dim>::apply_boundaries() {
             std::vector<Index> keep;
             keep.reserve(static_cast<std::size_t>(n - removed));
             for (Index i = 0; i < n; ++i) {
-                if (gone[static_cast<std::size_t>(i)])
-                    mass_out_ += m[i];
-                else
+                if (!gone[static_cast<std::size_t>(i)])
                     keep.push_back(i);
+                else if (ph[i] == solid)
+                    eroded_mass_ += m[i];
+                else
+                    mass_out_ += m[i];
             }
             particles_.gather(keep);
             neighbors_stale_ = true;
