@@ -418,6 +418,7 @@ OutletSpec read_box(const Section& s, int dim) {
 ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
     ShapeSpec shape;
     std::vector<std::string> kinds = {"box", "disc", "sphere"};
+    if (dim == 3) kinds.push_back("cylinder");
     if (allow_tank) kinds.push_back("tank");
     shape.kind = s.choice("shape", "box", kinds);
     if (shape.kind == "sphere") shape.kind = "disc";
@@ -441,6 +442,13 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
                 if (std::find(sides.begin(), sides.end(), o) == sides.end())
                     s.fail("open", fmt::format("unknown side \"{}\"", o));
         }
+    } else if (shape.kind == "cylinder") {
+        shape.center = s.vector("center", dim, "[m]");
+        shape.radius = s.number("radius", positive("[m]"));
+        shape.length = s.number("length", positive("[m]"));
+        shape.axis = s.choice("axis", "z", {"x", "y", "z"})[0] - 'x';
+        if (2.0 * shape.radius < dx || shape.length < dx)
+            s.fail("radius", fmt::format("the cylinder is smaller than numerics.particle_spacing = {} m", dx));
     } else {
         shape.center = s.vector("center", dim, "[m]");
         shape.radius = s.number("radius", positive("[m]"));

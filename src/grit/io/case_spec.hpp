@@ -11,10 +11,12 @@ namespace grit::io {
 
 /// A geometry primitive. Vectors have `dimension` components.
 struct ShapeSpec {
-    std::string kind;  ///< "box", "disc" (a sphere in 3D) or "tank" (walls around an inner box)
+    std::string kind;  ///< "box", "disc" (a sphere in 3D), "cylinder" (3D) or "tank" (walls around an inner box)
     std::vector<double> min, max;   ///< box, tank: corners [m]
     std::vector<double> center;     ///< disc: centre [m]
-    double radius = 0.0;            ///< disc: radius [m]
+    double radius = 0.0;            ///< disc, cylinder: radius [m]
+    double length = 0.0;            ///< cylinder: length along its axis [m]
+    int axis = 0;                   ///< cylinder: 0 = x, 1 = y, 2 = z
     int layers = 0;                 ///< tank: wall thickness in particle layers
     std::vector<std::string> open;  ///< tank: sides left without wall ("top", "bottom", "left", ...)
 };

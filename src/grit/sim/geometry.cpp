@@ -54,6 +54,19 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
         for_each_lattice_point<Dim>(c - Vec::filled(half), c + Vec::filled(half), dx, [&](const Vec& x) {
             if (core::norm2(x - c) <= r * r) points.push_back(x);
         });
+    } else if (shape.kind == "cylinder") {
+        // A lattice aligned with the cylinder's end face, cut to its radius.
+        const Vec c = to_vec<Dim>(shape.center);
+        const double half = std::ceil(shape.radius / dx) * dx;
+        Vec lo = c - Vec::filled(half), hi = c + Vec::filled(half);
+        lo[shape.axis] = c[shape.axis] - 0.5 * shape.length;
+        hi[shape.axis] = c[shape.axis] + 0.5 * shape.length;
+        for_each_lattice_point<Dim>(lo, hi, dx, [&](const Vec& x) {
+            double r2 = 0.0;
+            for (int k = 0; k < Dim; ++k)
+                if (k != shape.axis) r2 += (x[k] - c[k]) * (x[k] - c[k]);
+            if (r2 <= shape.radius * shape.radius) points.push_back(x);
+        });
     } else if (shape.kind == "tank") {
         const Vec lo = to_vec<Dim>(shape.min), hi = to_vec<Dim>(shape.max);
         const double t = shape.layers * dx;

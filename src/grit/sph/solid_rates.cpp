@@ -159,9 +159,14 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
                 const double ratio2 = ratio * ratio;
                 const double fab = as_n == 4.0 ? ratio2 * ratio2 : std::pow(ratio, as_n);
                 const SymTensor3 ra = (art_a + art[b]) * fab;
-                fx += ra.xx * gx + ra.xy * gy + ra.zx * gz;
-                fy += ra.xy * gx + ra.yy * gy + ra.yz * gz;
-                fz += ra.zx * gx + ra.yz * gy + ra.zz * gz;
+                const double ax = ra.xx * gx + ra.xy * gy + ra.zx * gz;
+                const double ay = ra.xy * gx + ra.yy * gy + ra.yz * gz;
+                const double az = ra.zx * gx + ra.yz * gy + ra.zz * gz;
+                fx += ax;
+                fy += ay;
+                fz += az;
+                // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.
+                work_rate -= 0.5 * m[b] * (ax * vab[0] + ay * vab[1] + (Dim == 3 ? az * vab[Dim - 1] : 0.0));
             }
             dv[0] += m[b] * fx;
             dv[1] += m[b] * fy;
