@@ -194,11 +194,11 @@ void Simulation<Dim>::build_pipeline() {
     pipeline_.add("wall_pressure", [this] {
         boundary::update_wall_pressure(particles_, neighbors_, kernel_, fluid_parameters_.gravity, spec_.materials);
     });
-    pipeline_.add("sph_prepare", [this] { sph::prepare_sph_workspace(particles_, fluid_workspace_); });
-    pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_, fluid_workspace_); });
+    pipeline_.add("sph_prepare", [this] { sph::prepare_sph_workspace(particles_, sph_workspace_); });
+    pipeline_.add("sph_fluid", [this] { sph::compute_fluid_rates(particles_, neighbors_, kernel_, fluid_parameters_, sph_workspace_); });
     if (has_solids_) {
         pipeline_.add("sph_solid", [this] {
-            sph::compute_solid_rates(particles_, neighbors_, kernel_, solid_parameters_, fluid_workspace_,
+            sph::compute_solid_rates(particles_, neighbors_, kernel_, solid_parameters_, sph_workspace_,
                                      solid_workspace_);
         });
     }

@@ -112,7 +112,7 @@ private:
     sph::Kernel<Dim> kernel_;
     double spacing_, smoothing_length_;
     sph::FluidRateParameters<Dim> fluid_parameters_;
-    sph::FluidWorkspace fluid_workspace_;
+    sph::SphWorkspace sph_workspace_;
     bool has_solids_ = false;
     sph::SolidRateParameters<Dim> solid_parameters_;
     sph::SolidWorkspace solid_workspace_;

@@ -6,13 +6,15 @@
 #include "grit/parallel/parallel.hpp"
 #include <algorithm>
 
+#include "grit/sph/artificial_viscosity.hpp"
+
 namespace grit::sph {
 
 namespace {
 
 template <int Dim, class K>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm, const FluidWorkspace& work) {
+                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
@@ -42,6 +44,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const Vec va = v[a];
         const double rho_a = rho[a];
         const double p_term_a = p_term[a];
+        const double inv_rho_a = 1.0 / rho_a;
         const PairCoefficients& ca = coef[mat[a]];
         const double diffusion_scale = 2.0 * delta * h * ca.sound_speed;
         const double hydrostatic_scale = ca.reference_density / (ca.sound_speed * ca.sound_speed);
@@ -67,18 +70,13 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 
             continuity += volume_b * vx * f;  // eq. (22)
 
-            // Pressure (eq. 23) and artificial viscosity (eqs. 26-27, only for approaching pairs),
-            // both along grad W. The viscosity is written without a branch: phi = 0 when vx >= 0.
-            const double phi = h * std::min(vx, 0.0) * inv_r2;
-            const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
-                                  0.5 * (ca.beta + cb.beta) * phi * phi) *
-                                 2.0 * inv_rho_sum;
+            // Pressure (eq. 23) and artificial viscosity (eqs. 26-27), both along grad W.
+            const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
             // Across a fluid-solid interface (density ratio up to 9) the pressure term takes the
             // multi-phase form (p_a + p_b) / (rho_a rho_b) of Colagrossi & Landrini (2003); still
             // antisymmetric, so momentum is conserved.
-            const double rho_b = rho[b];
-            const double pressure = phase[b] == solid ? (p_term_a * rho_a / rho_b + p_term[b] * rho_b / rho_a)
-                                                      : (p_term_a + p_term[b]);
+            const double ratio = rho[b] * inv_rho_a;  // rho_b / rho_a
+            const double pressure = phase[b] == solid ? (p_term_a / ratio + p_term[b] * ratio) : (p_term_a + p_term[b]);
             const double along_x = m[b] * (-pressure - pi_ab) * f;
 
             // Laminar viscosity, eq. (25) in the form of Lo & Shao (2002), along v_ab.
@@ -101,7 +99,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 }  // namespace
 
 template <int Dim>
-void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, FluidWorkspace& work) {
+void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, SphWorkspace& work) {
     const Index n = ps.size();
     const double* rho = ps.density();
     const double* p = ps.pressure();
@@ -120,15 +118,15 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, FluidWorkspac
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const FluidWorkspace& workspace) {
+                         const SphWorkspace& workspace) {
     std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters, workspace); }, kernel);
 }
 
-template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, FluidWorkspace&);
-template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, FluidWorkspace&);
+template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
+template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                     const Kernel<2>&, const FluidRateParameters<2>&, const FluidWorkspace&);
+                                     const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                     const Kernel<3>&, const FluidRateParameters<3>&, const FluidWorkspace&);
+                                     const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&);
 
 }  // namespace grit::sph

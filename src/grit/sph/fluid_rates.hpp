@@ -9,17 +9,10 @@
 #include "grit/neighbors/neighbor_list.hpp"
 #include "grit/particles/sph_particles.hpp"
 #include "grit/sph/kernels.hpp"
+#include "grit/sph/pair_coefficients.hpp"
 
 namespace grit::sph {
 
-/// Per-material coefficients the pair sums read, indexed by the particle's material.
-struct PairCoefficients {
-    double sound_speed;          ///< c0 [m/s]
-    double reference_density;    ///< rho0 [kg/m^3]
-    double alpha;                ///< artificial viscosity alpha_pi [-]
-    double beta;                 ///< artificial viscosity beta_pi [-]
-    double kinematic_viscosity;  ///< nu = mu_f / rho0 [m^2/s]
-};
 
 template <int Dim>
 struct FluidRateParameters {
@@ -32,14 +25,14 @@ struct FluidRateParameters {
 
 /// Per-step scratch of the SPH sums (recomputed each step, never sorted): p/rho^2 and m/rho of each
 /// particle, so the pair loop divides as little as possible.
-struct FluidWorkspace {
+struct SphWorkspace {
     std::vector<double> pressure_term;
     std::vector<double> volume;
 };
 
 /// Fills the workspace for this step: p/rho^2 and m/rho of every particle.
 template <int Dim>
-void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, FluidWorkspace& workspace);
+void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, SphWorkspace& workspace);
 
 /// Fills density_rate and acceleration of every fluid particle from its neighbours (fluid, wall and,
 /// later, solid particles). Gather form: each particle writes only its own rates.
@@ -49,13 +42,13 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, FluidW
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const FluidWorkspace& workspace);
+                         const SphWorkspace& workspace);
 
-extern template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, FluidWorkspace&);
-extern template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, FluidWorkspace&);
+extern template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
+extern template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                            const Kernel<2>&, const FluidRateParameters<2>&, const FluidWorkspace&);
+                                            const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&);
 extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                            const Kernel<3>&, const FluidRateParameters<3>&, const FluidWorkspace&);
+                                            const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&);
 
 }  // namespace grit::sph

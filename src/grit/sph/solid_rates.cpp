@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include "grit/sph/artificial_stress.hpp"
+#include "grit/sph/artificial_viscosity.hpp"
 
 namespace grit::sph {
 
@@ -15,7 +16,7 @@ namespace {
 
 template <int Dim, class K>
 void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const SolidRateParameters<Dim>& prm, const FluidWorkspace& sph, SolidWorkspace& work) {
+                      const SolidRateParameters<Dim>& prm, const SphWorkspace& sph, SolidWorkspace& work) {
     using Vec = core::Vec<Dim>;
     using core::SymTensor3;
     const Index n = ps.size();
@@ -121,10 +122,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const PairCoefficients& cb = coef[mat[b]];
 
             // Artificial viscosity with every neighbour (eq. 29), along the plain kernel gradient.
-            const double phi = h * std::min(vx, 0.0) / (r2 + eps_h2);
-            const double pi_ab = (-0.5 * (ca.alpha + cb.alpha) * 0.5 * (ca.sound_speed + cb.sound_speed) * phi +
-                                  0.5 * (ca.beta + cb.beta) * phi * phi) /
-                                 (0.5 * (rho_a + rho[b]));
+            const double pi_ab = artificial_viscosity(h, vx, 1.0 / (r2 + eps_h2), 1.0 / (rho_a + rho[b]), ca, cb);
             dv += xab * (-m[b] * pi_ab * f);
             work_rate += 0.5 * m[b] * pi_ab * vx * f;
 
@@ -204,13 +202,13 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 template <int Dim>
 void compute_solid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const SolidRateParameters<Dim>& parameters,
-                         const FluidWorkspace& sph, SolidWorkspace& workspace) {
+                         const SphWorkspace& sph, SolidWorkspace& workspace) {
     std::visit([&](const auto& k) { solid_rates_loop(particles, neighbors, k, parameters, sph, workspace); }, kernel);
 }
 
 template void compute_solid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&, const Kernel<2>&,
-                                     const SolidRateParameters<2>&, const FluidWorkspace&, SolidWorkspace&);
+                                     const SolidRateParameters<2>&, const SphWorkspace&, SolidWorkspace&);
 template void compute_solid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&, const Kernel<3>&,
-                                     const SolidRateParameters<3>&, const FluidWorkspace&, SolidWorkspace&);
+                                     const SolidRateParameters<3>&, const SphWorkspace&, SolidWorkspace&);
 
 }  // namespace grit::sph

@@ -41,13 +41,13 @@ struct SolidRateParameters {
 template <int Dim>
 void compute_solid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const SolidRateParameters<Dim>& parameters,
-                         const FluidWorkspace& sph, SolidWorkspace& workspace);
+                         const SphWorkspace& sph, SolidWorkspace& workspace);
 
 extern template void compute_solid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                            const Kernel<2>&, const SolidRateParameters<2>&, const FluidWorkspace&,
+                                            const Kernel<2>&, const SolidRateParameters<2>&, const SphWorkspace&,
                                             SolidWorkspace&);
 extern template void compute_solid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                            const Kernel<3>&, const SolidRateParameters<3>&, const FluidWorkspace&,
+                                            const Kernel<3>&, const SolidRateParameters<3>&, const SphWorkspace&,
                                             SolidWorkspace&);
 
 }  // namespace grit::sph
