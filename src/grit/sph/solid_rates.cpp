@@ -9,6 +9,7 @@
 
 #include "grit/sph/artificial_stress.hpp"
 #include "grit/sph/artificial_viscosity.hpp"
+#include "grit/sph/tensor_ops.hpp"
 
 namespace grit::sph {
 
@@ -140,53 +141,28 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             // Between solids, eq. (29) with the corrected kernel gradient of each particle:
             // sum_b m_b [sigma_a/rho_a^2 L_a + sigma_b/rho_b^2 L_b] grad W (antisymmetric per pair, so
             // momentum is conserved), plus the artificial stress.
-            const double gx = xab[0] * f, gy = xab[1] * f, gz = Dim == 3 ? xab[Dim - 1] * f : 0.0;
-            const SymTensor3& lb = corr[b];
-            const double cx = la.xx * gx + la.xy * gy + la.zx * gz;
-            const double cy = la.xy * gx + la.yy * gy + la.yz * gz;
-            const double cz = la.zx * gx + la.yz * gy + la.zz * gz;
-            const double dx_ = lb.xx * gx + lb.xy * gy + lb.zx * gz;
-            const double dy_ = lb.xy * gx + lb.yy * gy + lb.yz * gz;
-            const double dz_ = lb.zx * gx + lb.yz * gy + lb.zz * gz;
-            const SymTensor3& sigma_b = stress_term[b];
-            double fx = sigma_a.xx * cx + sigma_a.xy * cy + sigma_a.zx * cz + sigma_b.xx * dx_ + sigma_b.xy * dy_ + sigma_b.zx * dz_;
-            double fy = sigma_a.xy * cx + sigma_a.yy * cy + sigma_a.yz * cz + sigma_b.xy * dx_ + sigma_b.yy * dy_ + sigma_b.yz * dz_;
-            double fz = sigma_a.zx * cx + sigma_a.yz * cy + sigma_a.zz * cz + sigma_b.zx * dx_ + sigma_b.yz * dy_ + sigma_b.zz * dz_;
+            const Vec grad = xab * f;
+            const Vec ca_grad = dot(la, grad);     // L_a grad W
+            const Vec cb_grad = dot(corr[b], grad);  // L_b grad W
+            Vec force = dot(sigma_a, ca_grad) + dot(stress_term[b], cb_grad);
             if (eps_as > 0.0) {
                 const double ratio = kernel.value(r) * inv_w_dx;
                 const double ratio2 = ratio * ratio;
                 const double fab = as_n == 4.0 ? ratio2 * ratio2 : std::pow(ratio, as_n);
-                const SymTensor3 ra = (art_a + art[b]) * fab;
-                const double ax = ra.xx * gx + ra.xy * gy + ra.zx * gz;
-                const double ay = ra.xy * gx + ra.yy * gy + ra.yz * gz;
-                const double az = ra.zx * gx + ra.yz * gy + ra.zz * gz;
-                fx += ax;
-                fy += ay;
-                fz += az;
+                const Vec as_force = dot<Dim>((art_a + art[b]) * fab, grad);
+                force += as_force;
                 // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.
-                work_rate -= 0.5 * m[b] * (ax * vab[0] + ay * vab[1] + (Dim == 3 ? az * vab[Dim - 1] : 0.0));
+                work_rate -= 0.5 * m[b] * core::dot(as_force, vab);
             }
-            dv[0] += m[b] * fx;
-            dv[1] += m[b] * fy;
-            if constexpr (Dim == 3) dv[Dim - 1] += m[b] * fz;
+            dv += force * m[b];
             // The matching internal-energy rate, -m_b sigma_a/rho_a^2 : (v_ab (x) L_a grad W): with the
             // momentum above, kinetic + internal energy is conserved pair by pair.
-            const double vxa = vab[0], vya = vab[1], vza = Dim == 3 ? vab[Dim - 1] : 0.0;
-            work_rate -= m[b] * (sigma_a.xx * vxa * cx + sigma_a.yy * vya * cy + sigma_a.zz * vza * cz +
-                                 sigma_a.xy * (vxa * cy + vya * cx) + sigma_a.yz * (vya * cz + vza * cy) +
-                                 sigma_a.zx * (vza * cx + vxa * cz));
+            work_rate -= m[b] * double_dot(sigma_a, vab, ca_grad);
 
             // Strain rate and spin, eq. (31), with v_ba = -v_ab and the corrected gradient L_a grad W.
-            const double ux = -vab[0] * volume_b, uy = -vab[1] * volume_b, uz = Dim == 3 ? -vab[Dim - 1] * volume_b : 0.0;
-            grad_v_sym.xx += ux * cx;
-            grad_v_sym.yy += uy * cy;
-            grad_v_sym.zz += uz * cz;
-            grad_v_sym.xy += 0.5 * (ux * cy + uy * cx);
-            grad_v_sym.yz += 0.5 * (uy * cz + uz * cy);
-            grad_v_sym.zx += 0.5 * (uz * cx + ux * cz);
-            w.xy += 0.5 * (ux * cy - uy * cx);
-            w.yz += 0.5 * (uy * cz - uz * cy);
-            w.zx += 0.5 * (uz * cx - ux * cz);
+            const Vec u = vab * (-volume_b);
+            add_symmetric_outer(grad_v_sym, u, ca_grad);
+            add_skew_outer(w, u, ca_grad);
         }
         drho[a] = rho_a * (continuity - grad_v_sym.trace());
         acc[a] = dv + g;
