@@ -1,0 +1,92 @@
+// Tangential spring history of grain-grain contacts (first seed paper eq. 9), keyed by persistent grain
+// ids. Values sit beside the neighbour-list entries (no look-up in the contact loop); when the lists
+// are rebuilt, possibly after the grains were re-sorted or some removed, save() / restore() carry each
+// contact's value over by the pair of ids.
+//
+// Each pair's value is held twice, in both grains' rows; both rows compute it from the same inputs in
+// the same (canonical) order, so the two copies stay bit-identical.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/dem/grain_neighbors.hpp"
+#include "grit/dem/grain_loop.hpp"
+
+namespace grit::dem {
+
+template <int Dim>
+class ContactHistory {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// delta_t of each neighbour-list entry [m] (zero when the pair is not in contact).
+    Vec* values() noexcept { return values_.data(); }
+    const Vec* values() const noexcept { return values_.data(); }
+    std::size_t size() const noexcept { return values_.size(); }
+
+    /// Keeps the non-zero values of the current lists with their grain ids (before a rebuild or a
+    /// reordering). `ids` are those of the n grains the lists were built for (grains appended since
+    /// have no history yet).
+    void save(const std::int32_t* ids, Index n, const GrainNeighborList<Dim>& list) {
+        saved_rows_.clear();
+        saved_partner_.clear();
+        saved_value_.clear();
+        if (values_.size() != list.entry_count() || list.grain_count() > n) return;  // no history yet
+        for (Index i = 0; i < list.grain_count(); ++i) {
+            const auto first = static_cast<Index>(saved_partner_.size());
+            for (Index k = list.begin(i); k < list.end(i); ++k) {
+                const Vec& v = values_[static_cast<std::size_t>(k)];
+                if (core::norm2(v) == 0.0) continue;
+                saved_partner_.push_back(ids[list.indices()[k]]);
+                saved_value_.push_back(v);
+            }
+            if (static_cast<Index>(saved_partner_.size()) > first)
+                saved_rows_.push_back({ids[i], first, static_cast<Index>(saved_partner_.size())});
+        }
+        std::sort(saved_rows_.begin(), saved_rows_.end(),
+                  [](const SavedRow& a, const SavedRow& b) { return a.owner < b.owner; });
+    }
+
+    /// Sizes the values to the new lists and fills each entry with the saved value of its pair of ids.
+    void restore(const std::int32_t* ids, const GrainNeighborList<Dim>& list) {
+        values_.assign(list.entry_count(), Vec::zero());
+        if (saved_rows_.empty()) return;
+        for_each_grain(list.grain_count(), [&](Index i) {
+            const auto row = std::lower_bound(saved_rows_.begin(), saved_rows_.end(), ids[i],
+                                              [](const SavedRow& r, std::int32_t id) { return r.owner < id; });
+            if (row == saved_rows_.end() || row->owner != ids[i]) return;
+            for (Index k = list.begin(i); k < list.end(i); ++k) {
+                const std::int32_t partner = ids[list.indices()[k]];
+                for (Index s = row->first; s < row->last; ++s)
+                    if (saved_partner_[static_cast<std::size_t>(s)] == partner) {
+                        values_[static_cast<std::size_t>(k)] = saved_value_[static_cast<std::size_t>(s)];
+                        break;
+                    }
+            }
+        });
+    }
+
+    /// Number of pairs (counted once) with a non-zero history.
+    std::size_t active_pairs() const {
+        std::size_t n = 0;
+        for (const Vec& v : values_) n += core::norm2(v) != 0.0;
+        return n / 2;
+    }
+
+private:
+    struct SavedRow {
+        std::int32_t owner;
+        Index first, last;
+    };
+    std::vector<Vec> values_;
+    std::vector<SavedRow> saved_rows_;
+    std::vector<std::int32_t> saved_partner_;
+    std::vector<Vec> saved_value_;
+};
+
+}  // namespace grit::dem

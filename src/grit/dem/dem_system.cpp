@@ -1,0 +1,197 @@
+// DemSystem: neighbour updates with history carry-over, the force stage and the velocity-Verlet step.
+#include "grit/dem/dem_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "grit/core/error.hpp"
+#include "grit/dem/grain_integrator.hpp"
+#include "grit/dem/grain_loop.hpp"
+#include "grit/parallel/parallel.hpp"
+
+namespace grit::dem {
+
+template <int Dim>
+DemSystem<Dim>::DemSystem(DemParameters<Dim> parameters, std::vector<GrainMaterial> materials)
+    : parameters_(std::move(parameters)), materials_(std::move(materials)),
+      law_(make_contact_law(parameters_.contact_law)) {
+    if (materials_.empty()) throw core::InputError("a grain system needs at least one material");
+    for (const auto& m : materials_)
+        if (!(m.density > 0.0) || !(m.youngs_modulus > 0.0) || !(m.restitution > 0.0 && m.restitution <= 1.0) ||
+            !(m.friction >= 0.0) || !(m.poisson_ratio >= 0.0 && m.poisson_ratio < 0.5))
+            throw core::InputError("grain material '" + m.name +
+                                   "': needs density > 0 [kg/m^3], youngs_modulus > 0 [Pa], 0 <= poisson_ratio "
+                                   "< 0.5, friction >= 0 and 0 < restitution <= 1");
+    pair_table_.count = static_cast<std::int32_t>(materials_.size());
+    for (const auto& a : materials_)
+        for (const auto& b : materials_) pair_table_.table.push_back(pair_material(a, b));
+    parameters_.domain.finalise();
+}
+
+template <int Dim>
+Index DemSystem<Dim>::add_grain(const Vec& x, double radius, std::int32_t material, const Vec& v) {
+    if (material < 0 || material >= static_cast<std::int32_t>(materials_.size()))
+        throw core::InputError("grain material index " + std::to_string(material) + " out of range");
+    if (!(radius > 0.0)) throw core::InputError("grain radius must be > 0 [m], got " + std::to_string(radius));
+    lists_dirty_ = true;
+    forces_ready_ = false;
+    return grains_.add(x, radius, materials_[static_cast<std::size_t>(material)], material, v);
+}
+
+template <int Dim>
+void DemSystem<Dim>::add_wall(const PlaneWall<Dim>& wall) {
+    const double len = core::norm(wall.normal);
+    if (!(len > 0.0)) throw core::InputError("plane wall: the normal must be a non-zero vector");
+    if (wall.material < 0 || wall.material >= static_cast<std::int32_t>(materials_.size()))
+        throw core::InputError("plane wall: material index " + std::to_string(wall.material) + " out of range");
+    PlaneWall<Dim> w = wall;
+    w.normal *= 1.0 / len;
+    grains_.fields().template add<Vec>("wall_history_" + std::to_string(walls_.size()), Vec::zero(), false);
+    walls_.push_back(w);
+    forces_ready_ = false;
+}
+
+template <int Dim>
+void DemSystem<Dim>::gather(const std::vector<Index>& source) {
+    if (!history_saved_) history_.save(grains_.id(), grains_.size(), list_);
+    history_saved_ = true;
+    grains_.gather(source);  // forces and torques travel with their grains and stay valid
+    lists_dirty_ = true;
+}
+
+template <int Dim>
+double DemSystem<Dim>::skin() const {
+    if (parameters_.skin >= 0.0) return parameters_.skin;
+    const double rmax = max_over_grains(grains_.size(), 0.0, [&](Index i) { return grains_.radius()[i]; });
+    return 0.4 * rmax;
+}
+
+template <int Dim>
+void DemSystem<Dim>::rebuild_neighbors() {
+    const Index n = grains_.size();
+    if (!history_saved_) history_.save(grains_.id(), n, list_);
+    history_saved_ = false;
+    // Wrap into the periodic box, then sort grains by cell so neighbours are close in memory.
+    Vec* x = grains_.position();
+    const GrainDomain<Dim>& domain = parameters_.domain;
+    for_each_grain(n, [&](Index i) { x[i] = domain.wrap(x[i]); });
+    skin_ = skin();
+    const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains_.radius()[i]; });
+    const double cell = 2.0 * rmax + skin_;
+    const GrainGrid<Dim> grid = GrainNeighborList<Dim>::make_grid(domain, x, n, cell);
+    GrainNeighborList<Dim>::sort_by_cell(grid, x, n, order_);
+    grains_.gather(order_);
+    list_.build(grid, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), n, skin_);
+    history_.restore(grains_.id(), list_);
+    lists_dirty_ = false;
+    ++counters_.rebuilds;
+}
+
+template <int Dim>
+void DemSystem<Dim>::update_neighbors() {
+    if (lists_dirty_ || list_.stale(std::as_const(grains_).position(), grains_.size())) rebuild_neighbors();
+}
+
+template <int Dim>
+void DemSystem<Dim>::compute_forces(double dt) {
+    update_neighbors();
+    Vec* f = grains_.force();
+    auto* t = grains_.torque();
+    const double* m = std::as_const(grains_).mass();
+    const Vec g = parameters_.gravity;
+    for_each_grain(grains_.size(), [&](Index i) {
+        f[i] = g * m[i];
+        t[i] = zero_spin<Dim>();
+    });
+    std::vector<Vec*> wall_history;
+    for (std::size_t s = 0; s < walls_.size(); ++s)
+        wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
+    std::visit(
+        [&](const auto& law) {
+            add_grain_contacts<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt);
+            if (!walls_.empty()) add_wall_contacts<Dim>(grains_, walls_, wall_history, pair_table_, law, dt);
+        },
+        law_);
+    forces_ready_ = true;
+}
+
+template <int Dim>
+void DemSystem<Dim>::begin_step(double dt) {
+    // Forces of a state no step has computed yet (new grains or walls): dt = 0 leaves the histories as
+    // they are, so a repeated evaluation does not count their increment twice.
+    if (!forces_ready_) compute_forces(0.0);
+    kick_grains(grains_, 0.5 * dt);
+    drift_grains(grains_, dt);
+    compute_forces(dt);
+}
+
+template <int Dim>
+void DemSystem<Dim>::end_step(double dt) {
+    kick_grains(grains_, 0.5 * dt);
+    time_ += dt;
+    ++counters_.steps;
+}
+
+template <int Dim>
+void DemSystem<Dim>::step(double dt) {
+    begin_step(dt);
+    end_step(dt);
+}
+
+template <int Dim>
+double DemSystem<Dim>::stable_time_step(double impact_speed) const {
+    const Index n = grains_.size();
+    const double* r = grains_.radius();
+    const std::int32_t* mat = grains_.material();
+    return min_over_grains(n, 1e300, [&](Index i) {
+        const GrainMaterial& m = materials_[static_cast<std::size_t>(mat[i])];
+        if (std::holds_alternative<LinearSpringDashpot>(law_)) return linear_time_step<Dim>(m, r[i]);
+        double dt = 0.2 * rayleigh_time(m, r[i]);
+        if (impact_speed > 0.0) {
+            const PairMaterial& p = pair_table_.at(mat[i], mat[i]);
+            const double mass = grain_mass<Dim>(m.density, r[i]);
+            dt = std::min(dt, hertz_contact_time(0.5 * mass, 0.5 * r[i], p.youngs_effective, impact_speed) / 50.0);
+        }
+        return dt;
+    });
+}
+
+template <int Dim>
+std::size_t DemSystem<Dim>::contact_pairs() const {
+    const Index n = grains_.size();
+    if (list_.grain_count() != n) return 0;
+    const Vec* x = grains_.position();
+    const double* r = grains_.radius();
+    const Index* nb = list_.indices();
+    return parallel::sum(n, std::size_t{0}, [&](Index i) {
+        std::size_t c = 0;
+        for (Index k = list_.begin(i); k < list_.end(i); ++k) {
+            const Index j = nb[k];
+            const double reach = r[i] + r[j];
+            c += j > i && core::norm2(parameters_.domain.nearest_image(x[j] - x[i])) < reach * reach;
+        }
+        return c;
+    });
+}
+
+template <int Dim>
+double DemSystem<Dim>::kinetic_energy() const {
+    const Vec* v = grains_.velocity();
+    const auto* w = grains_.angular_velocity();
+    const double* m = grains_.mass();
+    const double* inertia = grains_.inertia();
+    return parallel::sum(grains_.size(), 0.0, [&](Index i) {
+        double rot;
+        if constexpr (Dim == 2) rot = w[i] * w[i];
+        else rot = core::norm2(w[i]);
+        return 0.5 * m[i] * core::norm2(v[i]) + 0.5 * inertia[i] * rot;
+    });
+}
+
+template class DemSystem<2>;
+template class DemSystem<3>;
+
+}  // namespace grit::dem

@@ -1,0 +1,115 @@
+// Grain neighbour search: a cell grid sized by the largest grain (largest diameter + skin), optional
+// periodic axes, grains sorted by cell, and full Verlet lists in compressed rows (each pair appears in
+// both grains' rows, for gather loops). The lists stay valid until a grain has moved more than skin/2.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+
+namespace grit::dem {
+
+/// The box of a grain system: periodic axes wrap between lower and upper; other axes are open (their
+/// bounds are ignored by the neighbour search, walls confine the grains).
+template <int Dim>
+struct GrainDomain {
+    std::array<bool, Dim> periodic{};
+    core::Vec<Dim> lower = core::Vec<Dim>::zero();
+    core::Vec<Dim> upper = core::Vec<Dim>::zero();
+
+    /// d wrapped to the nearest periodic image (minimum-image convention). Branch-free: open axes have
+    /// length 0 and inverse length 0.
+    core::Vec<Dim> nearest_image(core::Vec<Dim> d) const noexcept {
+        for (int k = 0; k < Dim; ++k) d[k] -= length_[k] * std::nearbyint(d[k] * inverse_length_[k]);
+        return d;
+    }
+    /// x moved into [lower, upper) along the periodic axes.
+    core::Vec<Dim> wrap(core::Vec<Dim> x) const noexcept {
+        for (int k = 0; k < Dim; ++k)
+            if (periodic[k]) x[k] -= length_[k] * std::floor((x[k] - lower[k]) * inverse_length_[k]);
+        return x;
+    }
+    /// Recomputes the cached lengths; call after changing periodic/lower/upper.
+    void finalise() noexcept {
+        for (int k = 0; k < Dim; ++k) {
+            length_[k] = periodic[k] ? upper[k] - lower[k] : 0.0;
+            inverse_length_[k] = periodic[k] ? 1.0 / length_[k] : 0.0;
+        }
+    }
+    double length(int k) const noexcept { return length_[k]; }
+
+private:
+    core::Vec<Dim> length_ = core::Vec<Dim>::zero();
+    core::Vec<Dim> inverse_length_ = core::Vec<Dim>::zero();
+};
+
+/// Cells of at least one list radius per axis; periodic axes are divided into a whole number of cells.
+template <int Dim>
+struct GrainGrid {
+    core::Vec<Dim> origin = core::Vec<Dim>::zero();
+    core::Vec<Dim> inverse_cell_size = core::Vec<Dim>::zero();
+    std::array<Index, Dim> dims{};
+    std::array<bool, Dim> periodic{};
+
+    Index cell_count() const noexcept {
+        Index n = 1;
+        for (int k = 0; k < Dim; ++k) n *= dims[k];
+        return n;
+    }
+    std::array<Index, Dim> coords(const core::Vec<Dim>& x) const noexcept {
+        std::array<Index, Dim> c{};
+        for (int k = 0; k < Dim; ++k) {
+            const auto v = static_cast<Index>(std::floor((x[k] - origin[k]) * inverse_cell_size[k]));
+            c[k] = v < 0 ? 0 : (v >= dims[k] ? dims[k] - 1 : v);
+        }
+        return c;
+    }
+    Index linear(const std::array<Index, Dim>& c) const noexcept {
+        Index id = c[Dim - 1];
+        for (int k = Dim - 2; k >= 0; --k) id = id * dims[k] + c[k];
+        return id;
+    }
+};
+
+/// Full Verlet lists of grains within R_i + R_j + skin, built over grains sorted by cell.
+template <int Dim>
+class GrainNeighborList {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// The grid for x[0..n) (wrapped into the domain) with cells of at least `cell_size`. Throws
+    /// InputError when a periodic length is shorter than three cells, BlowUpError when grains have
+    /// spread so far that the grid would be huge.
+    static GrainGrid<Dim> make_grid(const GrainDomain<Dim>& domain, const Vec* x, Index n, double cell_size);
+
+    /// Counting sort by cell: order[i] is the grain that goes to position i (stable, deterministic).
+    static void sort_by_cell(const GrainGrid<Dim>& grid, const Vec* x, Index n, std::vector<Index>& order);
+
+    /// Builds the lists of x[0..n), which must be sorted by the cells of `grid` and wrapped.
+    void build(const GrainGrid<Dim>& grid, const GrainDomain<Dim>& domain, const Vec* x, const double* radius,
+               Index n, double skin);
+
+    Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
+    Index end(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i) + 1]; }
+    const Index* indices() const noexcept { return indices_.data(); }
+    Index grain_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
+    std::size_t entry_count() const noexcept { return indices_.size(); }
+
+    /// True when a grain has moved more than skin/2 since the build, or the count has changed.
+    bool stale(const Vec* x, Index n) const;
+
+private:
+    std::vector<Index> offsets_{0};
+    std::vector<Index> indices_;
+    std::vector<Index> cell_start_;
+    std::vector<Vec> reference_positions_;
+    double skin_ = 0.0;
+};
+
+extern template class GrainNeighborList<2>;
+extern template class GrainNeighborList<3>;
+
+}  // namespace grit::dem

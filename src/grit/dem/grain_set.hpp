@@ -1,0 +1,143 @@
+// The DEM grain set: discs (2D) or spheres (3D) as named structure-of-arrays fields of one registry,
+// so sorting by cell, removal, insertion and output carry every field (and any a coupling adds).
+#pragma once
+
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/dem/grain_material.hpp"
+#include "grit/dem/spin.hpp"
+#include "grit/particles/field_registry.hpp"
+
+namespace grit::dem {
+
+/// Mass of a grain of radius r: a sphere rho 4/3 pi r^3 in 3D; in 2D a disc per metre of thickness,
+/// rho pi r^2 [kg/m] (2D masses, forces and torques are per metre of thickness, as in the SPH set).
+template <int Dim>
+constexpr double grain_mass(double density, double radius) noexcept {
+    if constexpr (Dim == 2) return density * std::numbers::pi * radius * radius;
+    else return density * (4.0 / 3.0) * std::numbers::pi * radius * radius * radius;
+}
+
+/// Moment of inertia about the centre: m r^2 / 2 for a disc (per metre of thickness), 2/5 m r^2 for a
+/// sphere.
+template <int Dim>
+constexpr double grain_inertia(double mass, double radius) noexcept {
+    return (Dim == 2 ? 0.5 : 0.4) * mass * radius * radius;
+}
+
+/// Grains with translation and rotation (first seed paper eq. 1). Fields (names as written to output):
+/// `id` (persistent, survives sorting and removal), `position`, `velocity`, `angular_velocity` (a scalar
+/// w_z in 2D, a vector in 3D), `force`, `torque` (accumulators, cleared at the start of each step's
+/// force stage), `radius`, `mass`, `inertia`, `material` (index into the system's material table).
+template <int Dim>
+class GrainSet {
+public:
+    using Vec = core::Vec<Dim>;
+    using SpinT = Spin<Dim>;
+
+    GrainSet()
+        : id_(&fields_.add<std::int32_t>("id", -1, true)),
+          position_(&fields_.add<Vec>("position", Vec::zero(), false)),
+          velocity_(&fields_.add<Vec>("velocity", Vec::zero(), true)),
+          angular_velocity_(&fields_.add<SpinT>("angular_velocity", zero_spin<Dim>(), true)),
+          force_(&fields_.add<Vec>("force", Vec::zero(), true)),
+          torque_(&fields_.add<SpinT>("torque", zero_spin<Dim>(), false)),
+          radius_(&fields_.add<double>("radius", 0.0, true)),
+          mass_(&fields_.add<double>("mass", 0.0, true)),
+          inertia_(&fields_.add<double>("inertia", 0.0, false)),
+          material_(&fields_.add<std::int32_t>("material", 0, true)) {}
+
+    GrainSet(const GrainSet& o) : fields_(o.fields_), next_id_(o.next_id_) { rebind(); }
+    GrainSet& operator=(const GrainSet& o) {
+        fields_ = o.fields_;
+        next_id_ = o.next_id_;
+        rebind();
+        return *this;
+    }
+
+    particles::FieldRegistry& fields() noexcept { return fields_; }
+    const particles::FieldRegistry& fields() const noexcept { return fields_; }
+    Index size() const noexcept { return fields_.size(); }
+
+    /// Appends one grain of `material` (density from it) at rest unless v is given; returns its index.
+    Index add(const Vec& x, double radius, const GrainMaterial& material, std::int32_t material_index,
+              const Vec& v = Vec::zero()) {
+        const Index i = size();
+        fields_.resize(i + 1);
+        (*id_)[i] = next_id_++;
+        (*position_)[i] = x;
+        (*velocity_)[i] = v;
+        (*radius_)[i] = radius;
+        (*mass_)[i] = grain_mass<Dim>(material.density, radius);
+        (*inertia_)[i] = grain_inertia<Dim>((*mass_)[i], radius);
+        (*material_)[i] = material_index;
+        return i;
+    }
+    /// Reorders and/or removes grains: new[i] = old[source[i]].
+    void gather(const std::vector<Index>& source) { fields_.gather(source); }
+
+    const std::int32_t* id() const noexcept { return id_->data(); }
+    Vec* position() noexcept { return position_->data(); }
+    Vec* velocity() noexcept { return velocity_->data(); }
+    SpinT* angular_velocity() noexcept { return angular_velocity_->data(); }
+    Vec* force() noexcept { return force_->data(); }
+    SpinT* torque() noexcept { return torque_->data(); }
+    double* radius() noexcept { return radius_->data(); }
+    double* mass() noexcept { return mass_->data(); }
+    double* inertia() noexcept { return inertia_->data(); }
+    std::int32_t* material() noexcept { return material_->data(); }
+
+    const Vec* position() const noexcept { return position_->data(); }
+    const Vec* velocity() const noexcept { return velocity_->data(); }
+    const SpinT* angular_velocity() const noexcept { return angular_velocity_->data(); }
+    const Vec* force() const noexcept { return force_->data(); }
+    const SpinT* torque() const noexcept { return torque_->data(); }
+    const double* radius() const noexcept { return radius_->data(); }
+    const double* mass() const noexcept { return mass_->data(); }
+    const double* inertia() const noexcept { return inertia_->data(); }
+    const std::int32_t* material() const noexcept { return material_->data(); }
+
+    /// Points and every output field (grains/*.vtu).
+    io::PointCloud snapshot() const {
+        io::PointCloud cloud;
+        cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
+        const Vec* x = position();
+        for (Index i = 0; i < size(); ++i)
+            for (int k = 0; k < Dim; ++k) cloud.points[3 * static_cast<std::size_t>(i) + k] = x[i][k];
+        fields_.append_output(cloud);
+        return cloud;
+    }
+
+private:
+    void rebind() {
+        id_ = &fields_.get<std::int32_t>("id");
+        position_ = &fields_.get<Vec>("position");
+        velocity_ = &fields_.get<Vec>("velocity");
+        angular_velocity_ = &fields_.get<SpinT>("angular_velocity");
+        force_ = &fields_.get<Vec>("force");
+        torque_ = &fields_.get<SpinT>("torque");
+        radius_ = &fields_.get<double>("radius");
+        mass_ = &fields_.get<double>("mass");
+        inertia_ = &fields_.get<double>("inertia");
+        material_ = &fields_.get<std::int32_t>("material");
+    }
+
+    particles::FieldRegistry fields_;
+    particles::Field<std::int32_t>* id_;
+    particles::Field<Vec>* position_;
+    particles::Field<Vec>* velocity_;
+    particles::Field<SpinT>* angular_velocity_;
+    particles::Field<Vec>* force_;
+    particles::Field<SpinT>* torque_;
+    particles::Field<double>* radius_;
+    particles::Field<double>* mass_;
+    particles::Field<double>* inertia_;
+    particles::Field<std::int32_t>* material_;
+    std::int32_t next_id_ = 0;
+};
+
+}  // namespace grit::dem

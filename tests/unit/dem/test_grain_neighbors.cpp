@@ -1,0 +1,78 @@
+// The grain neighbour lists against a brute-force search, with and without periodic axes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "grit/dem/grain_neighbors.hpp"
+
+using namespace grit::dem;
+using grit::Index;
+
+namespace {
+
+template <int Dim>
+void check_against_brute_force(bool periodic) {
+    GrainDomain<Dim> domain;
+    for (int k = 0; k < Dim; ++k) {
+        domain.periodic[k] = periodic && k < 2;
+        domain.lower[k] = 0.0;
+        domain.upper[k] = 0.02;
+    }
+    domain.finalise();
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const Index n = 600;
+    std::vector<grit::core::Vec<Dim>> x(n);
+    std::vector<double> r(n);
+    for (Index i = 0; i < n; ++i) {
+        for (int k = 0; k < Dim; ++k) x[i][k] = 0.02 * u(rng);
+        r[i] = 0.0005 + 0.0005 * u(rng);
+    }
+    const double skin = 0.0003;
+    const auto grid = GrainNeighborList<Dim>::make_grid(domain, x.data(), n, 0.002 + skin);
+    std::vector<Index> order;
+    GrainNeighborList<Dim>::sort_by_cell(grid, x.data(), n, order);
+    std::vector<grit::core::Vec<Dim>> xs(n);
+    std::vector<double> rs(n);
+    for (Index i = 0; i < n; ++i) xs[i] = x[order[i]], rs[i] = r[order[i]];
+    GrainNeighborList<Dim> list;
+    list.build(grid, domain, xs.data(), rs.data(), n, skin);
+    std::size_t entries = 0;
+    for (Index i = 0; i < n; ++i) {
+        std::vector<Index> expected;
+        for (Index j = 0; j < n; ++j) {
+            const double reach = rs[i] + rs[j] + skin;
+            if (j != i && grit::core::norm2(domain.nearest_image(xs[j] - xs[i])) < reach * reach) expected.push_back(j);
+        }
+        std::vector<Index> got(list.indices() + list.begin(i), list.indices() + list.end(i));
+        ASSERT_EQ(got, expected) << "grain " << i;
+        entries += got.size();
+    }
+    EXPECT_GT(entries, static_cast<std::size_t>(n));
+    EXPECT_FALSE(list.stale(xs.data(), n));
+    xs[5][0] += 0.6 * skin;
+    EXPECT_TRUE(list.stale(xs.data(), n));
+}
+
+}  // namespace
+
+TEST(GrainNeighbors, MatchBruteForce2D) { check_against_brute_force<2>(false); }
+TEST(GrainNeighbors, MatchBruteForce3D) { check_against_brute_force<3>(false); }
+TEST(GrainNeighbors, MatchBruteForcePeriodic2D) { check_against_brute_force<2>(true); }
+TEST(GrainNeighbors, MatchBruteForcePeriodic3D) { check_against_brute_force<3>(true); }
+
+TEST(GrainNeighbors, WrapAndNearestImage) {
+    GrainDomain<2> d;
+    d.periodic = {true, false};
+    d.lower = {{-1.0, 0.0}};
+    d.upper = {{1.0, 5.0}};
+    d.finalise();
+    const auto w = d.wrap({{1.25, 7.0}});
+    EXPECT_DOUBLE_EQ(w[0], -0.75);
+    EXPECT_DOUBLE_EQ(w[1], 7.0);
+    const auto m = d.nearest_image({{1.5, 3.0}});
+    EXPECT_DOUBLE_EQ(m[0], -0.5);
+    EXPECT_DOUBLE_EQ(m[1], 3.0);
+}
