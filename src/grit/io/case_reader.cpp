@@ -460,6 +460,70 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
 
 }  // namespace
 
+dem::GrainMaterial read_grain_material(const Section& s, const std::string& name) {
+    dem::GrainMaterial m;
+    m.name = name;
+    m.density = s.number("density", positive("[kg/m^3]"));
+    m.youngs_modulus = s.number("youngs_modulus", positive("[Pa]"));
+    m.poisson_ratio = s.number("poisson_ratio", in_range(-0.99, 0.4999));
+    m.friction = s.number("friction", non_negative("[-]"));
+    m.restitution = s.number("restitution", in_range(1e-6, 1.0));
+    m.diameter = s.number_or("diameter", 0.0, non_negative("[m]"));
+    return m;
+}
+
+/// Grain materials by name: [grain_materials.<name>] in the case first, else the built-in library.
+class GrainMaterialTable {
+public:
+    GrainMaterialTable(const Section& defined, std::vector<dem::GrainMaterial>& used) : defined_(defined), used_(used) {}
+
+    int resolve(const Section& s, std::string_view key, const std::string& name) {
+        for (std::size_t i = 0; i < used_.size(); ++i)
+            if (used_[i].name == name) return static_cast<int>(i);
+        if (defined_.has(name)) {
+            used_.push_back(read_grain_material(defined_.section(name), name));
+        } else if (auto m = dem::find_grain_material(name)) {
+            used_.push_back(*m);
+        } else {
+            std::string known;
+            for (const auto& l : dem::grain_material_library()) known += (known.empty() ? "" : ", ") + l.name;
+            s.fail(key, "is neither a [grain_materials] entry of the case nor a built-in grain material (" + known + ")");
+        }
+        return static_cast<int>(used_.size()) - 1;
+    }
+
+private:
+    const Section& defined_;
+    std::vector<dem::GrainMaterial>& used_;
+};
+
+/// Grain diameters: `diameter` (all equal) or a [..size] table with `distribution` = "fixed",
+/// "uniform" (min, max) or "normal" (mean, deviation, min, max); else the material's nominal diameter.
+dem::SizeDistribution read_grain_size(const Section& s, const dem::GrainMaterial& material) {
+    if (s.has("diameter") && s.has("size")) s.fail("size", "give either diameter or size, not both");
+    dem::SizeDistribution out;
+    if (s.has("size")) {
+        const Section z = s.section("size");
+        const std::string kind = z.choice("distribution", "fixed", {"fixed", "uniform", "normal"});
+        if (kind == "fixed") out = dem::FixedSize{z.number("diameter", positive("[m]"))};
+        else if (kind == "uniform") out = dem::UniformSize{z.number("min", positive("[m]")), z.number("max", positive("[m]"))};
+        else out = dem::NormalSize{z.number("mean", positive("[m]")), z.number("deviation", non_negative("[m]")),
+                                   z.number("min", positive("[m]")), z.number("max", positive("[m]"))};
+        try {
+            dem::validate(out);
+        } catch (const InputError& e) {
+            z.fail("distribution", e.what());
+        }
+    } else if (s.has("diameter")) {
+        out = dem::FixedSize{s.number("diameter", positive("[m]"))};
+    } else if (material.diameter > 0.0) {
+        out = dem::FixedSize{material.diameter};
+    } else {
+        s.fail("diameter", "is required (the grain material has no nominal diameter)");
+    }
+    return out;
+}
+
 CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
     if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
     toml::table root;
@@ -493,7 +557,9 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.write_snapshots = output.flag_or("snapshots", true);
 
     const Section numerics = top.section("numerics");
-    c.particle_spacing = numerics.number("particle_spacing", positive("[m]"));
+    const bool sph_blocks = top.has("fluid") || top.has("solid") || top.has("inlet") || top.has("wall");
+    c.particle_spacing = sph_blocks ? numerics.number("particle_spacing", positive("[m]"))
+                                    : numerics.number_or("particle_spacing", 1.0, positive("[m]"));
     c.smoothing_ratio = numerics.number_or("smoothing_ratio", c.smoothing_ratio, in_range(0.5, 3.0));
     std::vector<std::string> kernels(std::begin(sph::kernel_names), std::end(sph::kernel_names));
     c.kernel = numerics.choice("kernel", c.kernel, kernels);
@@ -609,6 +675,70 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (c.crater_x_max <= c.crater_x_min + dx) crater.fail("x_max", "must exceed x_min by more than a spacing [m]");
     }
 
+    const Section grain_materials = top.section("grain_materials");
+    GrainMaterialTable grain_table(grain_materials, c.grain_materials);
+    for (const Section& g : top.sections("grains")) {
+        GrainBlockSpec b;
+        b.key = g.path();
+        b.material = grain_table.resolve(g, "material", g.text_or("material", "garnet"));
+        b.size = read_grain_size(g, c.grain_materials[static_cast<std::size_t>(b.material)]);
+        b.arrangement = g.choice("arrangement", "single", {"single", "lattice", "random"});
+        if (b.arrangement == "single") {
+            b.position = g.vector("position", dim, "[m]");
+        } else {
+            b.min = g.vector("min", dim, "[m]");
+            b.max = g.vector("max", dim, "[m]");
+            for (int k = 0; k < dim; ++k)
+                if (b.max[k] <= b.min[k]) g.fail("max", "must exceed min in every direction");
+            if (b.arrangement == "lattice") {
+                b.spacing = g.number("spacing", positive("[m]"));
+                b.jitter = g.number_or("jitter", 0.0, non_negative("[m]"));
+            } else {
+                b.count = g.integer_or("count", 0, 1, 100000000);
+                if (b.count == 0) g.fail("count", "is required for arrangement = \"random\"");
+            }
+        }
+        b.seed = static_cast<std::uint64_t>(g.integer_or("seed", 1, 0, 2147483647));
+        b.velocity = g.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+        c.grains.push_back(std::move(b));
+    }
+    for (const Section& w : top.sections("grain_wall")) {
+        if (c.grains.empty()) throw InputError("key 'grain_wall': grain walls need [[grains]]");
+        GrainWallSpec gw;
+        gw.key = w.path();
+        gw.name = w.text_or("name", fmt::format("plane{}", c.grain_walls.size()));
+        if (gw.name.empty() || gw.name.find_first_of(", \t\"") != std::string::npos)
+            w.fail("name", "must be a non-empty name without commas, spaces or quotes");
+        gw.point = w.vector("point", dim, "[m]");
+        gw.normal = w.vector("normal", dim, "[-]");
+        double n2 = 0.0;
+        for (double v : gw.normal) n2 += v * v;
+        if (n2 <= 0.0) w.fail("normal", "must not be the zero vector");
+        for (double& v : gw.normal) v /= std::sqrt(n2);
+        gw.material = w.has("material") ? grain_table.resolve(w, "material", w.text("material")) : c.grains.front().material;
+        c.grain_walls.push_back(std::move(gw));
+    }
+    if (top.has("dem")) {
+        const Section d = top.section("dem");
+        c.dem.contact_law = d.choice("contact_law", c.dem.contact_law, {"linear", "hertz"});
+        c.dem.skin = d.number_or("skin", c.dem.skin, positive("[m]"));
+        const auto axes = d.strings_or("periodic", {});
+        c.dem.periodic.assign(static_cast<std::size_t>(dim), false);
+        for (const auto& a : axes) {
+            const int k = a.size() == 1 ? a[0] - 'x' : -1;
+            if (k < 0 || k >= dim) d.fail("periodic", fmt::format("names axes \"x\", \"y\"{}", dim == 3 ? ", \"z\"" : ""));
+            c.dem.periodic[static_cast<std::size_t>(k)] = true;
+        }
+        c.dem.overlap_coefficient = d.number_or("overlap_coefficient", 0.0, in_range(0.0, 0.999));
+        c.dem.solid_friction = d.number_or("solid_friction", -1.0, non_negative("[-]"));
+    }
+    c.dem.periodic.resize(static_cast<std::size_t>(dim), false);
+    for (const auto& name : grain_materials.keys()) {
+        bool in_use = false;
+        for (const auto& m : c.grain_materials) in_use |= m.name == name;
+        if (!in_use) read_grain_material(grain_materials.section(name), name);
+    }
+
     const Section domain = top.section("domain");
     c.domain_min = domain.vector("min", dim, "[m]");
     c.domain_max = domain.vector("max", dim, "[m]");
@@ -623,8 +753,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (!in_use) read_material(materials.section(name), name);
     }
 
-    if (c.fluids.empty() && c.inlets.empty() && c.solids.empty())
-        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]] or [[inlet]]");
+    if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
+        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]] or [[grains]]");
     report_unknown(root, "", used);
     return c;
 }

@@ -1,10 +1,13 @@
 // A case as read from its TOML file: plain data, validated, in SI units. sim/ builds a run from it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "grit/dem/grain_material.hpp"
+#include "grit/dem/size_distribution.hpp"
 #include "grit/material/material.hpp"
 
 namespace grit::io {
@@ -67,6 +70,39 @@ struct ProbeSpec {
     std::vector<double> min, max;
 };
 
+
+/// A block of DEM grains: one grain at `position`, a lattice, or random non-overlapping grains in a box.
+struct GrainBlockSpec {
+    std::string key;
+    int material = 0;                    ///< index into CaseSpec::grain_materials
+    std::string arrangement = "single";  ///< "single", "lattice" or "random"
+    std::vector<double> position;        ///< single: centre [m]
+    std::vector<double> min, max;        ///< lattice, random: the box filled [m]
+    double spacing = 0.0;                ///< lattice: spacing [m]
+    double jitter = 0.0;                 ///< lattice: random shift per axis up to this [m]
+    int count = 0;                       ///< random: number of grains
+    dem::SizeDistribution size = dem::FixedSize{};  ///< diameters
+    std::uint64_t seed = 1;              ///< of the size and position draws
+    std::vector<double> velocity;        ///< [m/s]
+};
+
+/// A plane wall for grains: a point on it and the normal towards the grains.
+struct GrainWallSpec {
+    std::string key;
+    std::string name;  ///< target name in impacts.csv
+    std::vector<double> point, normal;
+    int material = 0;  ///< index into CaseSpec::grain_materials
+};
+
+/// [dem]: grain contact law and coupling settings.
+struct DemSpec {
+    std::string contact_law = "hertz";  ///< "linear" (first paper eqs. 2-11) or "hertz" (second paper)
+    double skin = -1.0;                 ///< Verlet skin [m]; < 0: 0.2 x the largest diameter
+    std::vector<bool> periodic;         ///< per axis (needs the domain's bounds)
+    double overlap_coefficient = 0.0;   ///< chi of eq. (13)
+    double solid_friction = -1.0;       ///< mu grain-SPH solid/wall; < 0: the grain material's
+};
+
 struct CaseSpec {
     std::filesystem::path source;  ///< the case file
     std::string name;              ///< output base name
@@ -105,6 +141,11 @@ struct CaseSpec {
 
     bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (2D)
     double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
+    std::vector<dem::GrainMaterial> grain_materials;  ///< the grain (and grain-wall) materials used
+    std::vector<GrainBlockSpec> grains;
+    std::vector<GrainWallSpec> grain_walls;
+    DemSpec dem;
+    bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
 };
 
 }  // namespace grit::io

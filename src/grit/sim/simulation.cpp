@@ -81,10 +81,12 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     if (has_solids_) register_solid_fields();
 
     build_particles();
+    if (!spec_.grains.empty()) grains_ = std::make_unique<GrainPhase<Dim>>(spec_);
     for (const auto& in : spec_.inlets) {
         const auto& m = spec_.materials[static_cast<std::size_t>(in.material)];
         inlets_.emplace_back(in, spacing_, m.reference_density(), m.reference_density() * std::pow(spacing_, Dim));
     }
+    has_sph_ = particles_.size() > 0 || !inlets_.empty();
     build_pipeline();
 }
 
@@ -182,6 +184,16 @@ void Simulation<Dim>::build_particles() {
 
 template <int Dim>
 void Simulation<Dim>::build_pipeline() {
+    if (!has_sph_) {
+        // Grains only: the DEM step, checks and the time step.
+        pipeline_.add("grain_motion", [this] {
+            grains_->advance(time_, dt_previous_, dt_, step_ == 0);
+            dt_previous_ = dt_;
+        });
+        pipeline_.add("health_check", [this] { check_health(); });
+        pipeline_.add("time_step", [this] { compute_time_step(); });
+        return;
+    }
     pipeline_.add("integrate_predict", [this] { integrate_predict(); });
     pipeline_.add("boundaries", [this] { apply_boundaries(); });
     pipeline_.add("neighbors", [this] { update_neighbors(false); });
@@ -200,6 +212,19 @@ void Simulation<Dim>::build_pipeline() {
         pipeline_.add("sph_solid", [this] {
             sph::compute_solid_rates(particles_, neighbors_, kernel_, solid_parameters_, sph_workspace_,
                                      solid_workspace_);
+        });
+    }
+    if (grains_) {
+        // Grains and SPH solids/walls push each other at the state the SPH sums saw (eqs. 12-14); then
+        // the grains take their step with the same dt.
+        pipeline_.add("grain_contact", [this] {
+            const std::int32_t* fixed =
+                has_solids_ ? particles_.fields().template get<std::int32_t>("fixed").data() : nullptr;
+            grains_->couple(time_, particles_, fixed, dt_, spec_.materials);
+        });
+        pipeline_.add("grain_motion", [this] {
+            grains_->advance(time_, dt_previous_, dt_, step_ == 0);
+            dt_previous_ = dt_;
         });
     }
     pipeline_.add("integrate_update", [this] { integrate_update(); });
@@ -429,17 +454,20 @@ void Simulation<Dim>::compute_time_step() {
         },
         [](Limits x, Limits y) { return Limits{std::min(x.cfl, y.cfl), std::max(x.accel2, y.accel2)}; });
     const double cfl = lim.cfl, amax2 = lim.accel2;
-    double dt;
+    double dt = huge;
     if (cfl >= huge) {
         // No fluid yet (an inlet that has not started): step by the fastest speed in the case.
-        dt = spec_.cfl * h / max_speed_;
+        if (!inlets_.empty()) dt = spec_.cfl * h / max_speed_;
     } else {
         dt = spec_.cfl * cfl;
         if (amax2 > 0.0) dt = std::min(dt, 0.25 * std::sqrt(h / std::sqrt(amax2)));
         for (const auto& c : fluid_parameters_.materials)
             if (c.kinematic_viscosity > 0.0) dt = std::min(dt, 0.125 * h * h / c.kinematic_viscosity);
     }
+    // Eq. (51): the smaller of the SPH and DEM limits.
+    if (grains_) dt = std::min(dt, grains_->stable_time_step());
     dt_ = std::min(dt, spec_.max_time_step);
+    if (!(dt_ < huge)) throw core::InputError("nothing sets a time step: the case has no particles that move");
 }
 
 template <int Dim>
@@ -458,6 +486,11 @@ void Simulation<Dim>::check_health() {
                !std::isfinite(p[i]) || core::norm2(v[i]) > vmax2 ||
                (check_domain && !inside<Dim>(x[i], spec_.domain_min, spec_.domain_max));
     });
+    if (grains_ && bad < 0) {
+        const std::string grain = grains_->check(spec_.domain_min, spec_.domain_max);
+        if (!grain.empty())
+            throw core::BlowUpError(fmt::format("numerical blow-up at step {} (t = {:.9g} s): {}", step_, time_, grain));
+    }
     if (bad < 0) {
         if (step_ % spec_.check_interval == 0) {
             last_good_ = particles_;
@@ -496,6 +529,7 @@ void Simulation<Dim>::check_health() {
 template <int Dim>
 void Simulation<Dim>::prime() {
     primed_ = true;
+    if (grains_) grains_->prime();
     update_neighbors(true);
     pipeline_.run_only({"equation_of_state", "wall_pressure", "sph_prepare", "sph_fluid", "sph_solid", "time_step"});
     // The first step recomputes these rates at the same state; prime only sizes the first dt.
@@ -537,7 +571,7 @@ double Simulation<Dim>::probe(const std::string& name) const {
 template <int Dim>
 void Simulation<Dim>::write_output() {
     if (!options_.write_files) return;
-    if (spec_.write_snapshots) {
+    if (spec_.write_snapshots && has_sph_) {
         const auto file = fmt::format("snapshots/{}_{:06}.vtu", spec_.name, snapshot_index_++);
         io::write_vtu(options_.output_dir / file, particles_.snapshot());
         pvd_->add(time_, file);
@@ -555,6 +589,11 @@ void Simulation<Dim>::write_output() {
             for (std::size_t b = 0; b < s.crater.x.size(); ++b)
                 out << fmt::format("{:.9g},{:.9g}\n", s.crater.x[b], s.crater.surface[b]);
         }
+    }
+    if (grains_) {
+        if (spec_.write_snapshots) grains_->write_snapshot(options_.output_dir, spec_.name, time_);
+        row.insert(row.end(), {static_cast<double>(grains_->size()), grains_->kinetic_energy()});
+        grains_->flush_impacts();
     }
     for (std::size_t k = 0; k < spec_.probes.size(); ++k) row.push_back(probe(k));
     series_->write_row(row);
@@ -602,6 +641,12 @@ RunSummary Simulation<Dim>::summarize(double wall_time) const {
         s.probe_values.push_back(probe(k));
     }
     s.stages = pipeline_.timers();
+    if (grains_) {
+        s.has_grains = true;
+        s.grains = grains_->size();
+        s.grain_kinetic_energy = grains_->kinetic_energy();
+        s.impacts = grains_->impacts().size();
+    }
     s.has_solids = has_solids_;
     if (has_solids_) {
         const SolidMeasures m = solid_measures();
@@ -646,6 +691,11 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& stat
             j["crater_width"] = s.crater_width;
         }
     }
+    if (s.has_grains) {
+        j["grains"] = s.grains;
+        j["grain_kinetic_energy"] = s.grain_kinetic_energy;
+        j["impacts"] = s.impacts;
+    }
     j["momentum"] = s.momentum;
     for (std::size_t k = 0; k < s.probe_names.size(); ++k) {
         const double v = s.probe_values[k];
@@ -663,12 +713,17 @@ RunSummary Simulation<Dim>::run() {
         fs::create_directories(options_.output_dir / "snapshots");
         for (const auto& e : fs::directory_iterator(options_.output_dir / "snapshots"))
             if (e.path().extension() == ".vtu") fs::remove(e.path());
+        if (!has_sph_) fs::remove(options_.output_dir / "snapshots");
         pvd_ = std::make_unique<io::PvdWriter>(options_.output_dir / (spec_.name + ".pvd"));
         std::vector<std::string> columns = {"time",     "step",     "dt",           "kinetic_energy", "mass_total",
                                             "mass_in",  "mass_out", "max_velocity", "particles"};
         if (has_solids_) {
             columns.insert(columns.end(), {"eroded_mass", "max_plastic_strain", "internal_energy"});
             if (spec_.has_crater) columns.insert(columns.end(), {"crater_depth", "crater_width"});
+        }
+        if (grains_) {
+            columns.insert(columns.end(), {"grains", "grain_kinetic_energy"});
+            grains_->open_output(options_.output_dir, spec_.name);
         }
         for (const auto& p : spec_.probes) columns.push_back(p.name);
         series_ = std::make_unique<io::SeriesWriter>(options_.output_dir / "series.csv", columns);

@@ -17,6 +17,7 @@
 #include "grit/neighbors/cell_grid.hpp"
 #include "grit/neighbors/neighbor_list.hpp"
 #include "grit/particles/sph_particles.hpp"
+#include "grit/sim/grain_phase.hpp"
 #include "grit/sim/pipeline.hpp"
 #include "grit/sph/fluid_rates.hpp"
 #include "grit/sph/kernels.hpp"
@@ -42,6 +43,10 @@ struct RunSummary {
     bool has_solids = false, has_crater = false;
     double eroded_mass = 0.0, max_plastic_strain = 0.0, internal_energy = 0.0;
     double crater_depth = 0.0, crater_width = 0.0;
+    bool has_grains = false;
+    Index grains = 0;
+    double grain_kinetic_energy = 0.0;
+    std::size_t impacts = 0;
     std::vector<double> momentum;
     std::vector<std::string> probe_names;
     std::vector<double> probe_values;
@@ -79,6 +84,8 @@ public:
     /// Value of the probe named `name` now (throws std::out_of_range if there is none).
     double probe(const std::string& name) const;
     const io::CaseSpec& spec() const { return spec_; }
+    /// The grains, or null when the case has none.
+    GrainPhase<Dim>* grains() { return grains_.get(); }
 
 private:
     void build_particles();
@@ -114,9 +121,12 @@ private:
     sph::FluidRateParameters<Dim> fluid_parameters_;
     sph::SphWorkspace sph_workspace_;
     bool has_solids_ = false;
+    bool has_sph_ = true;  ///< false for a grains-only case: the SPH stages are left out
     sph::SolidRateParameters<Dim> solid_parameters_;
     sph::SolidWorkspace solid_workspace_;
     double eroded_mass_ = 0.0;
+    std::unique_ptr<GrainPhase<Dim>> grains_;
+    double dt_previous_ = 0.0;
     std::vector<boundary::JetInlet<Dim>> inlets_;
     Vec domain_min_, domain_max_;
     double max_speed_;

@@ -1,0 +1,65 @@
+// Contact between rigid DEM grains and SPH solid or wall particles by the penalty method of the first
+// seed paper (eqs. 12-14): an SPH particle closer than one initial spacing d_ini to a grain's surface is
+// pushed out along the grain's normal with the force that would remove the overlap in one step, plus a
+// tangential force capped by Coulomb friction; the grain takes the opposite force at the contact point.
+#pragma once
+
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/dem/grain_set.hpp"
+#include "grit/particles/sph_particles.hpp"
+
+namespace grit::coupling {
+
+/// Settings of the penalty contact.
+struct PenaltyContactParameters {
+    double spacing = 0.0;              ///< d_ini, the initial SPH particle spacing [m]
+    double overlap_coefficient = 0.0;  ///< chi of eq. (13), 0 = no overlap allowed [-]
+    double friction = 0.3;             ///< mu between grains and SPH solids and walls [-]
+};
+
+/// One grain-particle contact of the current step.
+template <int Dim>
+struct PenaltyContact {
+    Index grain = 0;     ///< grain index (this step's order)
+    Index particle = 0;  ///< SPH particle index
+    core::Vec<Dim> normal = core::Vec<Dim>::zero();  ///< unit normal from the grain centre to the particle
+    core::Vec<Dim> lever = core::Vec<Dim>::zero();   ///< x_p - x_i: the contact point from the grain centre
+    core::Vec<Dim> force = core::Vec<Dim>::zero();   ///< F_ia, on the particle [N] (N/m in 2D)
+};
+
+/// The contacts of one step and their forces. Each pair's force is computed once; the particle side and
+/// the grain side then gather them in fixed orders, so the sums are equal and opposite and do not depend
+/// on the thread count.
+template <int Dim>
+class GrainBoundaryContact {
+public:
+    using Vec = core::Vec<Dim>;
+
+    GrainBoundaryContact() = default;
+    explicit GrainBoundaryContact(PenaltyContactParameters parameters) : parameters_(parameters) {}
+
+    /// Finds the contacts of grains with solid and wall particles at the current positions and computes
+    /// their forces (eq. 13) for a step of dt.
+    void compute(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles, double dt);
+
+    /// Adds the forces: F / m_a to the acceleration of solid particles (walls and clamped particles keep
+    /// their prescribed motion), and -F with its moment about the centre (eq. 14) to the grains.
+    void apply(dem::GrainSet<Dim>& grains, particles::SphParticles<Dim>& particles,
+               const std::int32_t* fixed) const;
+
+    const std::vector<PenaltyContact<Dim>>& contacts() const noexcept { return contacts_; }
+    const PenaltyContactParameters& parameters() const noexcept { return parameters_; }
+
+private:
+    PenaltyContactParameters parameters_;
+    std::vector<PenaltyContact<Dim>> contacts_;   // ordered by particle
+    std::vector<Index> grain_start_, grain_order_;  // contacts of grain g: grain_order_[grain_start_[g] ..]
+};
+
+extern template class GrainBoundaryContact<2>;
+extern template class GrainBoundaryContact<3>;
+
+}  // namespace grit::coupling
