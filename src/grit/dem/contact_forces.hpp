@@ -56,15 +56,24 @@ inline ContactResponse<Dim> contact_response(const Law& law, const PairMaterial&
     return {t.force - n * normal.force, moment<Dim>(n, t.force), t.history};
 }
 
+/// Per-entry results of the pair pass, reused between steps (sized by the neighbour list).
+template <int Dim>
+struct PairScratch {
+    std::vector<core::Vec<Dim>> force;   ///< force on body a of the entry's pair
+    std::vector<Spin<Dim>> lever_moment; ///< n x F_t of the entry's pair
+};
+
 /// Adds every grain-grain contact force and torque to force/torque, updating `history`.
-/// The pair (i, j) is always evaluated with the lower id as body a, once per call site, and the grain
-/// that is body b takes the exact negative: the two grains receive equal and opposite forces bit for bit.
+/// Each pair is evaluated once, by the grain with the lower id (body a), in the pair pass, which
+/// writes only that grain's list entries; the gather pass then adds to each grain the results of its
+/// entries, the grain that is body b taking the exact negative of the force (read through the mirror
+/// entry). So the two grains receive equal and opposite forces bit for bit, and no thread writes where
+/// another reads.
 template <int Dim, class Law>
 void add_grain_contacts(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, ContactHistory<Dim>& history,
                         const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law,
-                        double dt) {
+                        double dt, PairScratch<Dim>& scratch) {
     using Vec = core::Vec<Dim>;
-    const std::int32_t* id = grains.id();
     const Vec* x = std::as_const(grains).position();
     const Vec* v = std::as_const(grains).velocity();
     const Spin<Dim>* w = std::as_const(grains).angular_velocity();
@@ -75,33 +84,49 @@ void add_grain_contacts(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& lis
     Spin<Dim>* torque = grains.torque();
     Vec* h = history.values();
     const Index* neighbor = list.indices();
-    for_each_grain(grains.size(), [&](Index i) {
-        Vec f = Vec::zero();
-        Spin<Dim> t = zero_spin<Dim>();
-        for (Index k = list.begin(i); k < list.end(i); ++k) {
-            const Index j = neighbor[k];
-            const bool i_is_a = id[i] < id[j];
-            const Index a = i_is_a ? i : j, b = i_is_a ? j : i;
-            const Vec d = domain.nearest_image(x[b] - x[a]);
-            const double reach = radius[a] + radius[b];
+    const Index* mirror = list.mirrors();
+    scratch.force.resize(list.entry_count());
+    scratch.lever_moment.resize(list.entry_count());
+    Vec* pair_force = scratch.force.data();
+    Spin<Dim>* pair_moment = scratch.lever_moment.data();
+    for_each_grain(grains.size(), [&](Index a) {
+        const Vec xa = x[a];
+        const double ra = radius[a];
+        for (Index k = list.begin(a); k < list.split(a); ++k) {  // partners of higher id
+            const Index b = neighbor[k];
+            const Vec d = domain.nearest_image(x[b] - xa);
+            const double reach = ra + radius[b];
             const double r2 = core::norm2(d);
             if (r2 >= reach * reach) {
                 h[k] = Vec::zero();
+                pair_force[k] = Vec::zero();
+                pair_moment[k] = zero_spin<Dim>();
                 continue;
             }
             const double r = std::sqrt(r2);
             const Vec n = d * (1.0 / r);
-            const Vec vab = v[a] - v[b] + spin_cross<Dim>(w[a] * radius[a] + w[b] * radius[b], n);
-            const ContactKinematics c{reach - r, 0.0, radius[a], radius[b], mass[a], mass[b]};
+            const Vec vab = v[a] - v[b] + spin_cross<Dim>(w[a] * ra + w[b] * radius[b], n);
+            const ContactKinematics c{reach - r, 0.0, ra, radius[b], mass[a], mass[b]};
             const ContactResponse<Dim> res =
                 contact_response<Dim>(law, materials.at(material[a], material[b]), n, vab, c, h[k], dt);
             h[k] = res.history;
-            const double sign = i_is_a ? 1.0 : -1.0;
-            f += res.force * sign;
-            t += res.lever_moment * radius[i];
+            pair_force[k] = res.force;
+            pair_moment[k] = res.lever_moment;
+        }
+    });
+    for_each_grain(grains.size(), [&](Index i) {
+        Vec f = Vec::zero();
+        Spin<Dim> t = zero_spin<Dim>();
+        for (Index k = list.begin(i); k < list.split(i); ++k) {  // i is body a
+            f += pair_force[k];
+            t += pair_moment[k];
+        }
+        for (Index k = list.split(i); k < list.end(i); ++k) {  // i is body b: the exact negative
+            f -= pair_force[mirror[k]];
+            t += pair_moment[mirror[k]];
         }
         force[i] += f;
-        torque[i] += t;
+        torque[i] += t * radius[i];
     });
 }
 

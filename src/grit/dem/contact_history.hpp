@@ -3,8 +3,8 @@
 // are rebuilt, possibly after the grains were re-sorted or some removed, save() / restore() carry each
 // contact's value over by the pair of ids.
 //
-// Each pair's value is held twice, in both grains' rows; both rows compute it from the same inputs in
-// the same (canonical) order, so the two copies stay bit-identical.
+// Each pair's value is held once, in the row of its body a (the grain with the lower id); the entry of
+// body b stays zero.
 #pragma once
 
 #include <algorithm>
@@ -71,11 +71,11 @@ public:
         });
     }
 
-    /// Number of pairs (counted once) with a non-zero history.
+    /// Number of pairs with a non-zero history.
     std::size_t active_pairs() const {
         std::size_t n = 0;
         for (const Vec& v : values_) n += core::norm2(v) != 0.0;
-        return n / 2;
+        return n;
     }
 
 private:

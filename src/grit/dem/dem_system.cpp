@@ -84,7 +84,8 @@ void DemSystem<Dim>::rebuild_neighbors() {
     const GrainGrid<Dim> grid = GrainNeighborList<Dim>::make_grid(domain, x, n, cell);
     GrainNeighborList<Dim>::sort_by_cell(grid, x, n, order_);
     grains_.gather(order_);
-    list_.build(grid, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), n, skin_);
+    list_.build(grid, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), grains_.id(), n,
+                skin_);
     history_.restore(grains_.id(), list_);
     lists_dirty_ = false;
     ++counters_.rebuilds;
@@ -111,7 +112,7 @@ void DemSystem<Dim>::compute_forces(double dt) {
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            add_grain_contacts<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt);
+            add_grain_contacts<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
             if (!walls_.empty()) add_wall_contacts<Dim>(grains_, walls_, wall_history, pair_table_, law, dt);
         },
         law_);

@@ -101,6 +101,7 @@ private:
     std::vector<PlaneWall<Dim>> walls_;
     GrainNeighborList<Dim> list_;
     ContactHistory<Dim> history_;
+    PairScratch<Dim> scratch_;
     std::vector<Index> order_;
     double time_ = 0.0;
     double skin_ = -1.0;

@@ -56,7 +56,7 @@ void GrainNeighborList<Dim>::sort_by_cell(const GrainGrid<Dim>& grid, const Vec*
 
 template <int Dim>
 void GrainNeighborList<Dim>::build(const GrainGrid<Dim>& grid, const GrainDomain<Dim>& domain, const Vec* x,
-                                   const double* radius, Index n, double skin) {
+                                   const double* radius, const std::int32_t* id, Index n, double skin) {
     skin_ = skin;
     const Index cells = grid.cell_count();
     cell_start_.assign(static_cast<std::size_t>(cells) + 1, 0);
@@ -101,11 +101,27 @@ void GrainNeighborList<Dim>::build(const GrainGrid<Dim>& grid, const GrainDomain
     });
     for (Index i = 0; i < n; ++i) offsets_[static_cast<std::size_t>(i) + 1] += offsets_[static_cast<std::size_t>(i)];
     indices_.resize(static_cast<std::size_t>(offsets_.back()));
+    split_.resize(static_cast<std::size_t>(n));
     for_each_grain(n, [&](Index i) {
         Index k = offsets_[static_cast<std::size_t>(i)];
         scan(i, [&](Index j) { indices_[static_cast<std::size_t>(k++)] = j; });
-        // Ascending partner index within a row: a deterministic order that also walks memory forward.
-        std::sort(indices_.begin() + offsets_[static_cast<std::size_t>(i)], indices_.begin() + k);
+        // Partners of higher id first (this grain's pairs), then lower; ascending index within each part.
+        const auto row = indices_.begin() + offsets_[static_cast<std::size_t>(i)];
+        std::sort(row, indices_.begin() + k, [&](Index p, Index q) {
+            const bool pa = id[p] > id[i], qa = id[q] > id[i];
+            return pa != qa ? pa : p < q;
+        });
+        split_[static_cast<std::size_t>(i)] = static_cast<Index>(
+            std::partition_point(row, indices_.begin() + k, [&](Index p) { return id[p] > id[i]; }) - indices_.begin());
+    });
+    mirror_.resize(indices_.size());
+    for_each_grain(n, [&](Index i) {
+        for (Index k = offsets_[static_cast<std::size_t>(i)]; k < offsets_[static_cast<std::size_t>(i) + 1]; ++k) {
+            const Index j = indices_[static_cast<std::size_t>(k)];
+            Index m = offsets_[static_cast<std::size_t>(j)];
+            while (indices_[static_cast<std::size_t>(m)] != i) ++m;
+            mirror_[static_cast<std::size_t>(k)] = m;
+        }
     });
     reference_positions_.assign(x, x + n);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <vector>
 
@@ -88,13 +89,19 @@ public:
     /// Counting sort by cell: order[i] is the grain that goes to position i (stable, deterministic).
     static void sort_by_cell(const GrainGrid<Dim>& grid, const Vec* x, Index n, std::vector<Index>& order);
 
-    /// Builds the lists of x[0..n), which must be sorted by the cells of `grid` and wrapped.
+    /// Builds the lists of x[0..n), which must be sorted by the cells of `grid` and wrapped. Each row
+    /// lists first the partners with a higher id (the pairs this grain evaluates, as body a), then
+    /// those with a lower id, each part in ascending index order.
     void build(const GrainGrid<Dim>& grid, const GrainDomain<Dim>& domain, const Vec* x, const double* radius,
-               Index n, double skin);
+               const std::int32_t* id, Index n, double skin);
 
     Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
     Index end(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i) + 1]; }
+    /// First entry of i's row whose partner has a lower id: [begin, split) are i's pairs as body a.
+    Index split(Index i) const noexcept { return split_[static_cast<std::size_t>(i)]; }
     const Index* indices() const noexcept { return indices_.data(); }
+    /// For entry k = (i, j): the entry (j, i) in j's row, so a pair evaluated once can be read by both.
+    const Index* mirrors() const noexcept { return mirror_.data(); }
     Index grain_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
     std::size_t entry_count() const noexcept { return indices_.size(); }
 
@@ -104,6 +111,8 @@ public:
 private:
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;
+    std::vector<Index> mirror_;
+    std::vector<Index> split_;
     std::vector<Index> cell_start_;
     std::vector<Vec> reference_positions_;
     double skin_ = 0.0;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -36,9 +37,10 @@ void check_against_brute_force(bool periodic) {
     GrainNeighborList<Dim>::sort_by_cell(grid, x.data(), n, order);
     std::vector<grit::core::Vec<Dim>> xs(n);
     std::vector<double> rs(n);
-    for (Index i = 0; i < n; ++i) xs[i] = x[order[i]], rs[i] = r[order[i]];
+    std::vector<std::int32_t> ids(n);
+    for (Index i = 0; i < n; ++i) xs[i] = x[order[i]], rs[i] = r[order[i]], ids[i] = order[i];
     GrainNeighborList<Dim> list;
-    list.build(grid, domain, xs.data(), rs.data(), n, skin);
+    list.build(grid, domain, xs.data(), rs.data(), ids.data(), n, skin);
     std::size_t entries = 0;
     for (Index i = 0; i < n; ++i) {
         std::vector<Index> expected;
@@ -47,6 +49,12 @@ void check_against_brute_force(bool periodic) {
             if (j != i && grit::core::norm2(domain.nearest_image(xs[j] - xs[i])) < reach * reach) expected.push_back(j);
         }
         std::vector<Index> got(list.indices() + list.begin(i), list.indices() + list.end(i));
+        for (Index k = list.begin(i); k < list.end(i); ++k) {
+            const Index j = list.indices()[k];
+            ASSERT_EQ(k < list.split(i), ids[j] > ids[i]);  // pairs of higher id first
+            ASSERT_EQ(list.indices()[list.mirrors()[k]], i);
+        }
+        std::sort(got.begin(), got.end());
         ASSERT_EQ(got, expected) << "grain " << i;
         entries += got.size();
     }
