@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "grit/core/error.hpp"
+#include "grit/dem/grain_material.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/material/library.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -78,10 +79,14 @@ int main(int argc, char** argv) {
                 grit::sim::Simulation<2>(spec, options);
             else
                 grit::sim::Simulation<3>(spec, options);
-            fmt::print("{}: ok ({}D, {} material(s))\n", case_file, spec.dimension, spec.materials.size());
+            fmt::print("{}: ok ({}D, {} material(s), {} grain material(s))\n", case_file, spec.dimension,
+                       spec.materials.size(), spec.grain_materials.size());
             return 0;
         }
         for (const auto& m : grit::material::library()) fmt::print("{}\n", grit::material::describe(m));
+        for (const auto& g : grit::dem::grain_material_library())
+            fmt::print("{}: grain (DEM): rho = {} kg/m^3, E = {:g} Pa, nu = {}, mu = {}, e = {}, d = {:g} m\n", g.name,
+                       g.density, g.youngs_modulus, g.poisson_ratio, g.friction, g.restitution, g.diameter);
         return 0;
     } catch (const grit::core::InputError& e) {
         fmt::print(stderr, "grit: error: {}\n", e.what());

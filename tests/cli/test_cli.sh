@@ -226,6 +226,44 @@ else
     skip "t0: VTK reads the .pvd and its .vtu" "$VTK_WHY"
 fi
 
+# --- grains: a short drop test writes grains/*.vtu and impacts.csv; bad grain input is refused -------
+
+BOUNCE=$ROOT/cases/dem_bounce_2d/case.toml
+G=$W/grains
+grit run "$BOUNCE" --end-time 0.12 --out "$G" --quiet
+if [[ $RC -eq 0 ]]; then
+    pass "grains: the drop test runs to 0.12 s"
+else
+    fail "grains: the drop test runs to 0.12 s" "exit $RC: $(cat "$W/stderr")"
+fi
+if [[ -f $G/impacts.csv ]] && [[ $(head -n 1 "$G/impacts.csv") == "time,grain,target,speed,angle" ]] &&
+    grep -q ',0,floor,' "$G/impacts.csv"; then
+    pass "grains: impacts.csv has its header and the floor impact"
+else
+    fail "grains: impacts.csv has its header and the floor impact" \
+        "$( [[ -f $G/impacts.csv ]] && head -n 3 "$G/impacts.csv" | tr '\n' '|' || echo missing)"
+fi
+gvtus=("$G"/grains/*.vtu)
+if [[ ${#gvtus[@]} -ge 2 ]] && [[ -f $G/dem_bounce_2d_grains.pvd ]]; then
+    pass "grains: grains/*.vtu and the grains .pvd written"
+else
+    fail "grains: grains/*.vtu and the grains .pvd written" "found ${#gvtus[@]} files"
+fi
+if [[ $HAVE_VTK -eq 1 ]]; then
+    vtk_check --pvd "$G/dem_bounce_2d_grains.pvd" radius velocity angular_velocity force
+    if [[ $VTK_RC -eq 0 ]]; then
+        pass "grains: VTK reads grains/*.vtu with radius, velocity, angular_velocity, force"
+    else
+        fail "grains: VTK reads grains/*.vtu with radius, velocity, angular_velocity, force" "$VTK_OUT"
+    fi
+else
+    skip "grains: VTK reads grains/*.vtu" "$VTK_WHY"
+fi
+expect_input_error "unknown grain material" "grains[0].material" "diamond" "built-in grain material" -- \
+    run "$BOUNCE" --set "grains[0].material=diamond"
+expect_input_error "restitution out of range" "grain_materials.drop_grain.restitution" "1.5" -- \
+    run "$BOUNCE" --set grain_materials.drop_grain.restitution=1.5
+
 # --- determinism: 1 and 2 threads give the same bytes ------------------------------------------------
 
 jet_ok=1

@@ -50,7 +50,8 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     const double* radius = grains.radius();
     const double d_ini = parameters_.spacing;
     const double largest = parallel::max(ng, 0.0, [&](Index i) { return radius[i]; });
-    const double reach = largest + d_ini;
+    const double near_distance = 2.0 * d_ini;  // pairs listed (the log's release distance)
+    const double reach = largest + near_distance;
 
     // Grains binned on a grid one reach wide; particles outside the grains' box (grown by the reach)
     // are skipped at once.
@@ -77,7 +78,7 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     };
     auto touches = [&](Index a, Index i) {
         const double r2 = core::norm2(x[a] - xg[i]);
-        const double reach_i = radius[i] + d_ini;
+        const double reach_i = radius[i] + near_distance;
         return r2 < reach_i * reach_i;
     };
 
@@ -114,6 +115,8 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
             c.normal = normal;
             c.lever = normal * radius[i];                    // contact point p on the grain's surface
             const double overlap = d_ini - (d - radius[i]);  // d_n = d_ini - d_p (step 4)
+            c.touching = overlap > 0.0;
+            if (!c.touching) continue;
             // Eq. (12): the velocity of p relative to the particle.
             const Vec vpa = vg[i] + dem::spin_cross<Dim>(wg[i], c.lever) - v[a];
             // Eq. (13): the normal force that removes the overlap in one step, tangential capped by mu|F_n|.
@@ -150,7 +153,7 @@ void GrainBoundaryContact<Dim>::apply(dem::GrainSet<Dim>& grains, particles::Sph
     // the contacts are few; a serial pass keeps the order fixed.
     for (const auto& c : contacts_) {
         const Index a = c.particle;
-        if (phase[a] != solid || (fixed && fixed[a])) continue;
+        if (!c.touching || phase[a] != solid || (fixed && fixed[a])) continue;
         acc[a] += c.force * (1.0 / m[a]);
     }
     Vec* f = grains.force();
@@ -158,6 +161,7 @@ void GrainBoundaryContact<Dim>::apply(dem::GrainSet<Dim>& grains, particles::Sph
     parallel::for_each(grains.size(), [&](Index g) {
         for (Index k = grain_start_[g]; k < grain_start_[g + 1]; ++k) {
             const auto& c = contacts_[static_cast<std::size_t>(grain_order_[k])];
+            if (!c.touching) continue;
             f[g] -= c.force;                                  // Newton's third law, applied at p
             t[g] += dem::moment<Dim>(c.lever, -c.force);      // eq. (14)
         }

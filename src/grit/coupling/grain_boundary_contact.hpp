@@ -20,9 +20,12 @@ struct PenaltyContactParameters {
     double friction = 0.3;             ///< mu between grains and SPH solids and walls [-]
 };
 
-/// One grain-particle contact of the current step.
+/// One grain-particle pair of the current step: in contact (closer than d_ini to the grain's surface),
+/// or only near (closer than 2 d_ini), which the impact log uses so that a grain rattling on a surface
+/// is not counted as a new impact at every step it loses contact.
 template <int Dim>
 struct PenaltyContact {
+    bool touching = false;
     Index grain = 0;     ///< grain index (this step's order)
     Index particle = 0;  ///< SPH particle index
     core::Vec<Dim> normal = core::Vec<Dim>::zero();  ///< unit normal from the grain centre to the particle
@@ -41,8 +44,8 @@ public:
     GrainBoundaryContact() = default;
     explicit GrainBoundaryContact(PenaltyContactParameters parameters) : parameters_(parameters) {}
 
-    /// Finds the contacts of grains with solid and wall particles at the current positions and computes
-    /// their forces (eq. 13) for a step of dt.
+    /// Finds the contacts (and near pairs) of grains with solid and wall particles at the current
+    /// positions and computes the contacts' forces (eq. 13) for a step of dt.
     void compute(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles, double dt);
 
     /// Adds the forces: F / m_a to the acceleration of solid particles (walls and clamped particles keep

@@ -26,12 +26,13 @@ core::Vec<Dim> to_vec(const std::vector<double>& v) {
 constexpr int max_planes = 28;
 constexpr std::int32_t sph_wall_bit = 1 << 28, sph_solid_bit = 1 << 29;
 
-// Angle between a relative velocity and the surface whose normal is n [deg]: 90 for a normal impact.
+// Angle between a relative velocity and the surface whose normal is n (any length) [deg]: 90 for a
+// normal impact.
 template <int Dim>
 double impact_angle(const core::Vec<Dim>& v, const core::Vec<Dim>& n) {
-    const double speed = core::norm(v);
-    if (!(speed > 0.0)) return 90.0;
-    return std::asin(std::min(1.0, std::abs(core::dot(v, n)) / speed)) * 180.0 / std::numbers::pi;
+    const double speed = core::norm(v), length = core::norm(n);
+    if (!(speed > 0.0) || !(length > 0.0)) return 90.0;
+    return std::asin(std::min(1.0, std::abs(core::dot(v, n)) / (speed * length))) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace
@@ -101,32 +102,48 @@ void GrainPhase<Dim>::couple(double time, particles::SphParticles<Dim>& particle
     contact_.compute(grains, particles, dt);
     contact_.apply(grains, particles, fixed);
 
-    // First contacts with SPH solids and walls: the first contact of the step (in particle order) gives
-    // the relative velocity and the normal of the record.
+    // First contacts with SPH solids and walls. A target counts as left only when no particle of it is
+    // near (2 d_ini) any more, so a grain rattling on a surface logs one impact. The record's normal is
+    // the sum of the normals of the step's contacts (two particles touched symmetrically give the
+    // surface normal, not the direction to either of them).
     std::int32_t* mask = grains.fields().template get<std::int32_t>("contact_targets").data();
     const Index n = grains.size();
-    std::vector<std::int32_t> now(static_cast<std::size_t>(n), 0);
+    std::vector<std::int32_t> near(static_cast<std::size_t>(n), 0), touching(static_cast<std::size_t>(n), 0);
+    std::vector<Vec> normal(static_cast<std::size_t>(n), Vec::zero());
+    std::vector<Index> first(static_cast<std::size_t>(n), -1);
     const std::int32_t* phase = particles.phase();
     const auto& contacts = contact_.contacts();
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const auto& c = contacts[k];
         const std::int32_t bit = phase[c.particle] == static_cast<std::int32_t>(Phase::wall) ? sph_wall_bit : sph_solid_bit;
         const auto g = static_cast<std::size_t>(c.grain);
-        if (!(now[g] & bit) && !(mask[g] & bit)) {
-            const Vec vrel = grains.velocity()[c.grain] - particles.velocity()[c.particle];
-            impacts_.push_back({time, grains.id()[c.grain],
-                                bit == sph_wall_bit ? std::string("wall")
-                                                    : materials[static_cast<std::size_t>(particles.material()[c.particle])].name,
-                                core::norm(vrel), impact_angle<Dim>(vrel, c.normal)});
+        near[g] |= bit;
+        if (!c.touching) continue;
+        if (!(mask[g] & bit)) {
+            normal[g] += c.normal;
+            if (first[g] < 0) first[g] = static_cast<Index>(k);
         }
-        now[g] |= bit;
+        touching[g] |= bit;
     }
-    for (Index g = 0; g < n; ++g) mask[g] = (mask[g] & ~(sph_wall_bit | sph_solid_bit)) | now[static_cast<std::size_t>(g)];
+    for (Index g = 0; g < n; ++g) {
+        const auto gi = static_cast<std::size_t>(g);
+        const std::int32_t fresh = touching[gi] & ~mask[g];
+        if (fresh) {
+            const auto& c = contacts[static_cast<std::size_t>(first[gi])];
+            const Vec vrel = grains.velocity()[g] - particles.velocity()[c.particle];
+            const std::string target = fresh & sph_wall_bit && !(fresh & sph_solid_bit)
+                                           ? std::string("wall")
+                                           : materials[static_cast<std::size_t>(particles.material()[c.particle])].name;
+            impacts_.push_back({time, grains.id()[g], target, core::norm(vrel), impact_angle<Dim>(vrel, normal[gi])});
+        }
+        // Bits stay set while the target is near; new contacts set them.
+        mask[g] = (mask[g] & ~(sph_wall_bit | sph_solid_bit)) | (mask[g] & near[gi]) | touching[gi];
+    }
 }
 
 template <int Dim>
-void GrainPhase<Dim>::advance(double time, double dt_previous, double dt, bool first_step) {
-    if (!first_step) system_->end_step(dt_previous);
+void GrainPhase<Dim>::advance(double time, double dt, bool first_step) {
+    if (!first_step) system_->end_step(dt);
     system_->begin_step(dt);
 
     // First contacts with the plane walls, at the new positions.

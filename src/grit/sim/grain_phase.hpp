@@ -40,13 +40,16 @@ public:
     /// Forces at the first state (grain-grain and grain-plane).
     void prime();
     /// Penalty contact with SPH solid and wall particles at the current state (eqs. 12-14): forces on
-    /// both sides; logs first contacts. `fixed` marks clamped solid particles (may be null).
+    /// both sides; logs first contacts. `fixed` marks clamped solid particles (may be null). `dt` is the
+    /// step of eq. (13)'s stiffness 2 m_a / dt^2: the stable step, not one shortened to land on an
+    /// output time (a short step would make the penalty force, and the impulse, blow up).
     void couple(double time, particles::SphParticles<Dim>& particles, const std::int32_t* fixed, double dt,
                 const std::vector<material::Material>& materials);
-    /// Completes the step (second half kick with dt_previous; none on the first step), then starts the
-    /// next: half kick, drift by dt, grain-grain and plane forces at the new positions; logs first
-    /// contacts with the planes at time + dt.
-    void advance(double time, double dt_previous, double dt, bool first_step);
+    /// The grains' leap-frog step, the SPH particles' scheme: v^(n+1/2) = v^(n-1/2) + dt a^n (two half
+    /// kicks, the first half only on the first step), x^(n+1) = x^n + dt v^(n+1/2), then grain-grain and
+    /// plane forces at x^(n+1). Kicking grains and SPH particles with the same dt makes the exchanged
+    /// impulses equal and opposite. Logs first contacts with the planes at time + dt.
+    void advance(double time, double dt, bool first_step);
     /// Largest stable step of the grains (eq. 51 for the linear law; Rayleigh/Hertz time for Hertz).
     double stable_time_step() const;
     /// An empty string, or what went wrong with which grain (non-finite state, outside the domain).

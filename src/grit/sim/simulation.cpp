@@ -186,10 +186,7 @@ template <int Dim>
 void Simulation<Dim>::build_pipeline() {
     if (!has_sph_) {
         // Grains only: the DEM step, checks and the time step.
-        pipeline_.add("grain_motion", [this] {
-            grains_->advance(time_, dt_previous_, dt_, step_ == 0);
-            dt_previous_ = dt_;
-        });
+        pipeline_.add("grain_motion", [this] { grains_->advance(time_, dt_, step_ == 0); });
         pipeline_.add("health_check", [this] { check_health(); });
         pipeline_.add("time_step", [this] { compute_time_step(); });
         return;
@@ -220,12 +217,9 @@ void Simulation<Dim>::build_pipeline() {
         pipeline_.add("grain_contact", [this] {
             const std::int32_t* fixed =
                 has_solids_ ? particles_.fields().template get<std::int32_t>("fixed").data() : nullptr;
-            grains_->couple(time_, particles_, fixed, dt_, spec_.materials);
+            grains_->couple(time_, particles_, fixed, dt_stable_, spec_.materials);
         });
-        pipeline_.add("grain_motion", [this] {
-            grains_->advance(time_, dt_previous_, dt_, step_ == 0);
-            dt_previous_ = dt_;
-        });
+        pipeline_.add("grain_motion", [this] { grains_->advance(time_, dt_, step_ == 0); });
     }
     pipeline_.add("integrate_update", [this] { integrate_update(); });
     if (has_solids_) {
@@ -467,6 +461,7 @@ void Simulation<Dim>::compute_time_step() {
     // Eq. (51): the smaller of the SPH and DEM limits.
     if (grains_) dt = std::min(dt, grains_->stable_time_step());
     dt_ = std::min(dt, spec_.max_time_step);
+    dt_stable_ = dt_;
     if (!(dt_ < huge)) throw core::InputError("nothing sets a time step: the case has no particles that move");
 }
 

@@ -126,7 +126,7 @@ private:
     sph::SolidWorkspace solid_workspace_;
     double eroded_mass_ = 0.0;
     std::unique_ptr<GrainPhase<Dim>> grains_;
-    double dt_previous_ = 0.0;
+    double dt_stable_ = 0.0;  ///< the last stable step, before any shortening to land on an output time
     std::vector<boundary::JetInlet<Dim>> inlets_;
     Vec domain_min_, domain_max_;
     double max_speed_;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <variant>
 #include <vector>
 
 #include "grit/core/error.hpp"
@@ -166,8 +167,9 @@ TEST_F(CaseReaderTest, EveryShippedCaseReads) {
             EXPECT_GT(c.particle_spacing, 0.0);
             EXPECT_GT(c.output_interval, 0.0);
             EXPECT_EQ(c.gravity.size(), static_cast<std::size_t>(c.dimension));
-            EXPECT_FALSE(c.materials.empty());
-            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty() && c.solids.empty());
+            // SPH cases name their materials; grains-only cases (DEM) have grain materials instead.
+            EXPECT_TRUE(!c.materials.empty() || (!c.has_sph() && !c.grain_materials.empty()));
+            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty());
         } catch (const std::exception& e) {
             ADD_FAILURE() << f << ": " << e.what();
         }
@@ -451,6 +453,80 @@ TEST_F(CaseReaderTest, NoFluid) {
     // The block that was the fluid is now a wall, which needs a fluid's EOS: the walls' material is
     // required and the message says why.
     expect_error(text, {}, {"wall[0].material", "is required", "the case has none"});
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Grains
+
+/// A grains-only 2D case: one garnet grain above a plane.
+const std::string grains_2d = R"([simulation]
+dimension = 2
+[time]
+end = 0.01
+[output]
+interval = 0.005
+[physics]
+gravity = [0.0, -9.81]
+[dem]
+contact_law = "linear"
+[[grains]]
+arrangement = "single"
+position = [0.0, 0.01]
+[[grain_wall]]
+point = [0.0, 0.0]
+normal = [0.0, 2.0]
+[domain]
+min = [-0.1, -0.1]
+max = [0.1, 0.1]
+)";
+
+TEST_F(CaseReaderTest, GrainsOnlyCaseNeedsNoSpacingAndTakesGarnet) {
+    const CaseSpec c = read_ok(grains_2d);
+    EXPECT_FALSE(c.has_sph());
+    ASSERT_EQ(c.grains.size(), 1u);
+    ASSERT_EQ(c.grain_materials.size(), 1u);
+    EXPECT_EQ(c.grain_materials[0].name, "garnet");
+    // Table 4: d = 0.2 mm is the nominal diameter used when the block gives none.
+    ASSERT_TRUE(std::holds_alternative<grit::dem::FixedSize>(c.grains[0].size));
+    EXPECT_DOUBLE_EQ(std::get<grit::dem::FixedSize>(c.grains[0].size).diameter, 0.2e-3);
+    ASSERT_EQ(c.grain_walls.size(), 1u);
+    EXPECT_EQ(c.grain_walls[0].name, "plane0");
+    EXPECT_DOUBLE_EQ(c.grain_walls[0].normal[1], 1.0);  // normalised
+    EXPECT_EQ(c.dem.contact_law, "linear");
+}
+
+TEST_F(CaseReaderTest, GrainSizeDistributionAndInlineMaterial) {
+    const std::string random_block =
+        replaced(grains_2d, "arrangement = \"single\"\nposition = [0.0, 0.01]\n",
+                 "arrangement = \"random\"\nmin = [-0.05, 0.0]\nmax = [0.05, 0.05]\ncount = 10\n");
+    const CaseSpec c = read_ok(random_block, {"grains[0].size.distribution=normal", "grains[0].size.mean=0.002",
+                                           "grains[0].size.deviation=0.0005", "grains[0].size.min=0.001",
+                                           "grains[0].size.max=0.003", "grains[0].material=sand",
+                                           "grain_materials.sand.density=2650", "grain_materials.sand.youngs_modulus=7e10",
+                                           "grain_materials.sand.poisson_ratio=0.25", "grain_materials.sand.friction=0.5",
+                                           "grain_materials.sand.restitution=0.7"});
+    ASSERT_EQ(c.grains.size(), 1u);
+    EXPECT_EQ(c.grains[0].arrangement, "random");
+    EXPECT_EQ(c.grains[0].count, 10);
+    ASSERT_TRUE(std::holds_alternative<grit::dem::NormalSize>(c.grains[0].size));
+    EXPECT_EQ(c.grain_materials[0].name, "sand");
+    EXPECT_DOUBLE_EQ(c.grain_materials[0].density, 2650.0);
+}
+
+TEST_F(CaseReaderTest, GrainErrorsNameKeyValueAndReason) {
+    expect_error(grains_2d, {"grains[0].material=diamond"}, {"grains[0].material", "\"diamond\"", "garnet"});
+    expect_error(grains_2d, {"dem.contact_law=jkr"}, {"dem.contact_law", "\"jkr\"", "\"linear\", \"hertz\""});
+    expect_error(grains_2d, {"grains[0].diameter=-0.001"}, {"grains[0].diameter", "-0.001", "must be positive"});
+    expect_error(replaced(grains_2d, "arrangement = \"single\"\nposition = [0.0, 0.01]\n",
+                          "arrangement = \"lattice\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.01]\n"),
+                 {}, {"grains[0].spacing", "is required"});
+    expect_error(grains_2d, {"grains[0].size.distribution=uniform", "grains[0].size.min=0.002", "grains[0].size.max=0.001"},
+                 {"grains[0].size.distribution", "min <= (mean <=) max"});
+    expect_error(grains_2d, {"grain_wall[0].normal=[0.0, 0.0]"}, {"grain_wall[0].normal", "zero vector"});
+    expect_error(grains_2d, {"dem.periodic=[\"q\"]"}, {"dem.periodic", "axes"});
+    expect_error(grains_2d, {"grain_materials.sand.density=2650", "grains[0].material=sand"},
+                 {"grain_materials.sand.youngs_modulus", "is required"});
+    expect_error(grains_2d, {"grains[0].colour=red"}, {"grains[0].colour"});
 }
 
 TEST_F(CaseReaderTest, DuplicateProbeName) {
