@@ -35,22 +35,30 @@ inline void set_threads(int n) {
 #endif
 }
 
-/// Loops shorter than this run on the calling thread: starting a parallel region costs microseconds,
-/// and far more when another process holds a core (the region waits for every thread), which made a
-/// one-grain DEM run spend 95 % of its time in empty parallel regions.
+/// Loops shorter than this run on the calling thread, outside OpenMP: entering a parallel region costs
+/// microseconds and futex calls even with an `if(false)` clause, and far more when another process
+/// holds a core (the region waits for every thread); a one-grain DEM run spent 95 % of its time there.
 inline constexpr Index serial_below = 2048;
 
 /// Calls f(i) for i in [0, n), in parallel. f must write only to per-i data.
 template <class F>
 void for_each(Index n, F&& f) {
-#pragma omp parallel for schedule(static) if (n >= serial_below)
+    if (n < serial_below) {
+        for (Index i = 0; i < n; ++i) f(i);
+        return;
+    }
+#pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) f(i);
 }
 
 /// Calls f(i) for i in [0, n) with dynamic scheduling (for loops whose cost varies a lot per i).
 template <class F>
 void for_each_dynamic(Index n, F&& f) {
-#pragma omp parallel for schedule(dynamic, 256) if (n >= serial_below)
+    if (n < serial_below) {
+        for (Index i = 0; i < n; ++i) f(i);
+        return;
+    }
+#pragma omp parallel for schedule(dynamic, 256)
     for (Index i = 0; i < n; ++i) f(i);
 }
 
@@ -89,7 +97,11 @@ T sum(Index n, T zero, F&& f) {
 template <class F>
 double max(Index n, double lowest, F&& f) {
     double m = lowest;
-#pragma omp parallel for schedule(static) reduction(max : m) if (n >= serial_below)
+    if (n < serial_below) {
+        for (Index i = 0; i < n; ++i) m = std::max(m, f(i));
+        return m;
+    }
+#pragma omp parallel for schedule(static) reduction(max : m)
     for (Index i = 0; i < n; ++i) m = std::max(m, f(i));
     return m;
 }
@@ -98,7 +110,11 @@ double max(Index n, double lowest, F&& f) {
 template <class F>
 double min(Index n, double highest, F&& f) {
     double m = highest;
-#pragma omp parallel for schedule(static) reduction(min : m) if (n >= serial_below)
+    if (n < serial_below) {
+        for (Index i = 0; i < n; ++i) m = std::min(m, f(i));
+        return m;
+    }
+#pragma omp parallel for schedule(static) reduction(min : m)
     for (Index i = 0; i < n; ++i) m = std::min(m, f(i));
     return m;
 }
@@ -106,8 +122,13 @@ double min(Index n, double highest, F&& f) {
 /// Smallest i in [0, n) with pred(i) true, or -1. Deterministic whatever the thread count.
 template <class P>
 Index first_index(Index n, P&& pred) {
+    if (n < serial_below) {
+        for (Index i = 0; i < n; ++i)
+            if (pred(i)) return i;
+        return -1;
+    }
     Index first = n;
-#pragma omp parallel for schedule(static) reduction(min : first) if (n >= serial_below)
+#pragma omp parallel for schedule(static) reduction(min : first)
     for (Index i = 0; i < n; ++i)
         if (i < first && pred(i)) first = i;
     return first == n ? Index{-1} : first;

@@ -32,7 +32,9 @@ void check_against_brute_force(Index n, double radius, unsigned seed) {
     for (Index i = 0; i < n; ++i) {
         std::set<Index> expected, found;
         for (Index j = 0; j < n; ++j)
-            if (j != i && grit::core::norm2(sorted[i] - sorted[j]) < radius * radius) expected.insert(j);
+            if (j != i && grit::core::norm2(sorted.at(static_cast<std::size_t>(i)) -
+                                            sorted.at(static_cast<std::size_t>(j))) < radius * radius)
+                expected.insert(j);
         for (Index k = list.begin(i); k < list.end(i); ++k) found.insert(list.indices()[k]);
         ASSERT_EQ(found, expected) << "particle " << i;
     }
