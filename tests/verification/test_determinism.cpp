@@ -1,5 +1,5 @@
 // Every case in cases/ gives bit-identical particles at 1 and 2 threads (gather loops, fixed-order
-// reductions): a race or an order-dependent sum would show here.
+// reductions), grains included: a race or an order-dependent sum would show here.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,21 +19,35 @@ std::vector<std::filesystem::path> all_cases() {
 }
 
 template <int Dim>
-grit::particles::SphParticles<Dim> run(const grit::io::CaseSpec& spec, int threads, int steps) {
+struct RunState {
+    grit::particles::SphParticles<Dim> particles;
+    std::vector<grit::core::Vec<Dim>> grain_position, grain_velocity;  // in the grains' order
+};
+
+template <int Dim>
+RunState<Dim> run(const grit::io::CaseSpec& spec, int threads, int steps) {
     grit::parallel::set_threads(threads);
     grit::sim::Simulation<Dim> sim(spec, grit::testing::in_memory());
     sim.advance_to(0.0);
     for (int k = 0; k < steps; ++k) sim.step();
-    return sim.particles();
+    RunState<Dim> out{sim.particles(), {}, {}};
+    if (auto* g = sim.grains()) {
+        const auto& grains = g->system().grains();
+        out.grain_position.assign(grains.position(), grains.position() + grains.size());
+        out.grain_velocity.assign(grains.velocity(), grains.velocity() + grains.size());
+    }
+    return out;
 }
 
 template <int Dim>
 void compare(const grit::io::CaseSpec& spec) {
-    const auto one = run<Dim>(spec, 1, 40);
-    const auto two = run<Dim>(spec, 2, 40);
+    const auto one_run = run<Dim>(spec, 1, 40);
+    const auto two_run = run<Dim>(spec, 2, 40);
     grit::parallel::set_threads(2);
+    const auto& one = one_run.particles;
+    const auto& two = two_run.particles;
     ASSERT_EQ(one.size(), two.size());
-    ASSERT_GT(one.size(), 0);
+    ASSERT_GT(one.size() + static_cast<grit::Index>(one_run.grain_position.size()), 0);
     for (grit::Index i = 0; i < one.size(); ++i) {
         for (int k = 0; k < Dim; ++k) {
             ASSERT_EQ(one.position()[i][k], two.position()[i][k]) << "particle " << i;
@@ -42,6 +56,12 @@ void compare(const grit::io::CaseSpec& spec) {
         ASSERT_EQ(one.density()[i], two.density()[i]) << "particle " << i;
         ASSERT_EQ(one.pressure()[i], two.pressure()[i]) << "particle " << i;
     }
+    ASSERT_EQ(one_run.grain_position.size(), two_run.grain_position.size());
+    for (std::size_t i = 0; i < one_run.grain_position.size(); ++i)
+        for (int k = 0; k < Dim; ++k) {
+            ASSERT_EQ(one_run.grain_position[i][k], two_run.grain_position[i][k]) << "grain " << i;
+            ASSERT_EQ(one_run.grain_velocity[i][k], two_run.grain_velocity[i][k]) << "grain " << i;
+        }
 }
 
 }  // namespace
