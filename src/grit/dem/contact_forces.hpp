@@ -87,56 +87,70 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
                      const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law, double dt,
                      PairScratch<Dim>& scratch) {
     using Vec = core::Vec<Dim>;
-    const Vec* x = std::as_const(grains).position();
-    const Vec* v = std::as_const(grains).velocity();
-    const Spin<Dim>* w = std::as_const(grains).angular_velocity();
-    const double* radius = std::as_const(grains).radius();
-    const double* mass = std::as_const(grains).mass();
-    const std::int32_t* material = std::as_const(grains).material();
-    Vec* force = grains.force();
-    Spin<Dim>* torque = grains.torque();
-    Vec* h = history.values();
-    const Index* neighbor = list.indices();
-    const Index* mirror = list.mirrors();
     if (scratch.touching.size() != list.entry_count()) scratch.reset(list.entry_count());
-    Vec* pair_force = scratch.force.data();
-    Spin<Dim>* pair_moment = scratch.lever_moment.data();
-    std::uint8_t* touching = scratch.touching.data();
+    // The arrays, copied into each grain's call: a local copy stays in registers, where pointers read
+    // through the closure would be reloaded after every store to the byte flags (which may alias them).
+    const struct {
+        const Vec* x;
+        const Vec* v;
+        const Spin<Dim>* w;
+        const double* radius;
+        const double* mass;
+        const std::int32_t* material;
+        Vec* force;
+        Spin<Dim>* torque;
+        Vec* h;
+        const Index* neighbor;
+        const Index* mirror;
+        Vec* pair_force;
+        Spin<Dim>* pair_moment;
+        std::uint8_t* touching;
+    } arrays{std::as_const(grains).position(), std::as_const(grains).velocity(),
+             std::as_const(grains).angular_velocity(), std::as_const(grains).radius(),
+             std::as_const(grains).mass(), std::as_const(grains).material(), grains.force(), grains.torque(),
+             history.values(), list.indices(), list.mirrors(), scratch.force.data(),
+             scratch.lever_moment.data(), scratch.touching.data()};
     for_each_grain(grains.size(), [&](Index a) {
-        const Vec xa = x[a];
-        const double ra = radius[a];
+        const auto p = arrays;
+        const Vec xa = p.x[a], va = p.v[a];
+        const Spin<Dim> wra = p.w[a] * p.radius[a];
+        const double ra = p.radius[a], ma = p.mass[a];
+        const std::int32_t mat_a = p.material[a];
         Vec fa = Vec::zero();
         Spin<Dim> ta = zero_spin<Dim>();
-        for (Index k = list.begin(a); k < list.split(a); ++k) {  // partners of higher id
-            const Index b = neighbor[k];
-            const Vec d = domain.nearest_image(x[b] - xa);
-            const double reach = ra + radius[b];
+        const Index first = list.begin(a), last = list.split(a);
+        for (Index k = first; k < last; ++k) {  // partners of higher id
+            const Index b = p.neighbor[k];
+            const Vec d = domain.nearest_image(p.x[b] - xa);
+            const double reach = ra + p.radius[b];
             const double r2 = core::norm2(d);
             if (r2 >= reach * reach) {
-                if (touching[k]) {
-                    h[k] = Vec::zero();
-                    touching[k] = 0;
-                    touching[mirror[k]] = 0;
+                if (p.touching[k]) {
+                    p.h[k] = Vec::zero();
+                    p.touching[k] = 0;
+                    p.touching[p.mirror[k]] = 0;
                 }
                 continue;
             }
             const double r = std::sqrt(r2);
             const Vec n = d * (1.0 / r);
-            const Vec vab = v[a] - v[b] + spin_cross<Dim>(w[a] * ra + w[b] * radius[b], n);
-            const ContactKinematics c{reach - r, 0.0, ra, radius[b], mass[a], mass[b]};
+            const Vec vab = va - p.v[b] + spin_cross<Dim>(wra + p.w[b] * p.radius[b], n);
+            const ContactKinematics c{reach - r, 0.0, ra, p.radius[b], ma, p.mass[b]};
             const ContactResponse<Dim> res =
-                contact_response<Dim>(law, materials.at(material[a], material[b]), n, vab, c, h[k], dt);
-            h[k] = res.history;
-            const Index m = mirror[k];
-            pair_force[m] = res.force;
-            pair_moment[m] = res.lever_moment;
-            touching[k] = 1;
-            touching[m] = 1;
+                contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt);
+            p.h[k] = res.history;
+            const Index m = p.mirror[k];
+            p.pair_force[m] = res.force;
+            p.pair_moment[m] = res.lever_moment;
+            if (!p.touching[k]) {  // a new contact (mostly they last)
+                p.touching[k] = 1;
+                p.touching[m] = 1;
+            }
             fa += res.force;
             ta += res.lever_moment;
         }
-        force[a] = fa;
-        torque[a] = ta;
+        p.force[a] = fa;
+        p.torque[a] = ta;
     });
 }
 
@@ -169,10 +183,14 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
     for_each_grain(grains.size(), [&](Index i) {
         Vec f = force[i];
         Spin<Dim> t = torque[i];
-        for (Index k = list.split(i); k < list.end(i); ++k) {  // i is body b: the exact negative
-            if (!touching[k]) continue;
-            f -= pair_force[k];
-            t += pair_moment[k];
+        const Vec* const pf = pair_force;
+        const Spin<Dim>* const pm = pair_moment;
+        const std::uint8_t* const on = touching;
+        const Index first = list.split(i), last = list.end(i);
+        for (Index k = first; k < last; ++k) {  // i is body b: the exact negative
+            if (!on[k]) continue;
+            f -= pf[k];
+            t += pm[k];
         }
         f = gravity * mass[i] + f;
         t = t * radius[i];
