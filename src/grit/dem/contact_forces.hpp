@@ -61,17 +61,19 @@ template <int Dim, class Law>
 /// reads them in row order.
 template <int Dim>
 struct PairScratch {
-    std::vector<core::Vec<Dim>> force;   ///< force on body a of the entry's pair
-    std::vector<Spin<Dim>> lever_moment; ///< n x F_t of the entry's pair
-    /// 1 where the entry's pair touched at the last pair pass, in both of its entries; force and
-    /// lever_moment hold values only where it is 1. All 1 after reset() (unknown), so the first pass
-    /// settles every pair.
+    /// The force on body a of the entry's pair and n x F_t, side by side (read together).
+    struct Result {
+        core::Vec<Dim> force;
+        Spin<Dim> lever_moment;
+    };
+    std::vector<Result> result;
+    /// 1 where the entry's pair touched at the last pair pass, in both of its entries; result holds
+    /// values only where it is 1. All 1 after reset() (unknown), so the first pass settles every pair.
     std::vector<std::uint8_t> touching;
 
     /// Sizes the scratch to fresh lists of `entries` entries.
     void reset(std::size_t entries) {
-        force.resize(entries);
-        lever_moment.resize(entries);
+        result.resize(entries);
         touching.assign(entries, 1);
     }
 };
@@ -102,14 +104,13 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
         Vec* h;
         const Index* neighbor;
         const Index* mirror;
-        Vec* pair_force;
-        Spin<Dim>* pair_moment;
+        typename PairScratch<Dim>::Result* result;
         std::uint8_t* touching;
     } arrays{std::as_const(grains).position(), std::as_const(grains).velocity(),
              std::as_const(grains).angular_velocity(), std::as_const(grains).radius(),
              std::as_const(grains).mass(), std::as_const(grains).material(), grains.force(), grains.torque(),
-             history.values(), list.indices(), list.mirrors(), scratch.force.data(),
-             scratch.lever_moment.data(), scratch.touching.data()};
+             history.values(), list.indices(), list.mirrors(), scratch.result.data(),
+             scratch.touching.data()};
     for_each_grain(grains.size(), [&](Index a) {
         const auto p = arrays;
         const Vec xa = p.x[a], va = p.v[a];
@@ -140,8 +141,7 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
                 contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt);
             p.h[k] = res.history;
             const Index m = p.mirror[k];
-            p.pair_force[m] = res.force;
-            p.pair_moment[m] = res.lever_moment;
+            p.result[m] = {res.force, res.lever_moment};
             if (!p.touching[k]) {  // a new contact (mostly they last)
                 p.touching[k] = 1;
                 p.touching[m] = 1;
@@ -175,22 +175,20 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
     const std::int32_t* material = std::as_const(grains).material();
     Vec* force = grains.force();
     Spin<Dim>* torque = grains.torque();
-    const Vec* pair_force = scratch.force.data();
-    const Spin<Dim>* pair_moment = scratch.lever_moment.data();
+    const typename PairScratch<Dim>::Result* results = scratch.result.data();
     const std::uint8_t* touching = scratch.touching.data();
     constexpr double infinite = std::numeric_limits<double>::infinity();
     const bool kick = half_kick != 0.0;
     for_each_grain(grains.size(), [&](Index i) {
         Vec f = force[i];
         Spin<Dim> t = torque[i];
-        const Vec* const pf = pair_force;
-        const Spin<Dim>* const pm = pair_moment;
+        const typename PairScratch<Dim>::Result* const pair = results;
         const std::uint8_t* const on = touching;
         const Index first = list.split(i), last = list.end(i);
         for (Index k = first; k < last; ++k) {  // i is body b: the exact negative
             if (!on[k]) continue;
-            f -= pf[k];
-            t += pm[k];
+            f -= pair[k].force;
+            t += pair[k].lever_moment;
         }
         f = gravity * mass[i] + f;
         t = t * radius[i];
