@@ -42,7 +42,7 @@ struct ContactResponse {
 /// (eq. 7). The tangential history is carried into the current tangent plane, then grows by v_t dt
 /// (eq. 9).
 template <int Dim, class Law>
-inline ContactResponse<Dim> contact_response(const Law& law, const PairMaterial& pair, const core::Vec<Dim>& n,
+[[gnu::always_inline]] inline ContactResponse<Dim> contact_response(const Law& law, const PairMaterial& pair, const core::Vec<Dim>& n,
                                              const core::Vec<Dim>& relative_velocity, const ContactKinematics& c,
                                              const core::Vec<Dim>& history, double dt) noexcept {
     const double vn = core::dot(relative_velocity, n);
@@ -56,97 +56,142 @@ inline ContactResponse<Dim> contact_response(const Law& law, const PairMaterial&
     return {t.force - n * normal.force, moment<Dim>(n, t.force), t.history};
 }
 
-/// Per-entry results of the pair pass, reused between steps (sized by the neighbour list).
+/// Per-entry results of the pair pass, reused between steps (sized by the neighbour list). A pair's
+/// results sit in the entry of its body b (the mirror of body a's entry), where the completion pass
+/// reads them in row order.
 template <int Dim>
 struct PairScratch {
-    std::vector<core::Vec<Dim>> force;   ///< force on body a of the entry's pair
-    std::vector<Spin<Dim>> lever_moment; ///< n x F_t of the entry's pair
+    /// The force on body a of the entry's pair and n x F_t, side by side (read together).
+    struct Result {
+        core::Vec<Dim> force;
+        Spin<Dim> lever_moment;
+    };
+    std::vector<Result> result;
+    /// 1 where the entry's pair touched at the last pair pass, in both of its entries; result holds
+    /// values only where it is 1. All 1 after reset() (unknown), so the first pass settles every pair.
+    std::vector<std::uint8_t> touching;
+
+    /// Sizes the scratch to fresh lists of `entries` entries.
+    void reset(std::size_t entries) {
+        result.resize(entries);
+        touching.assign(entries, 1);
+    }
 };
 
-/// Adds every grain-grain contact force and torque to force/torque, updating `history`.
-/// Each pair is evaluated once, by the grain with the lower id (body a), in the pair pass, which
-/// writes only that grain's list entries; the gather pass then adds to each grain the results of its
-/// entries, the grain that is body b taking the exact negative of the force (read through the mirror
-/// entry). So the two grains receive equal and opposite forces bit for bit, and no thread writes where
-/// another reads.
+/// The pair pass of the grain-grain contacts: each pair is evaluated once, by the grain with the lower
+/// id (body a), which writes its own force and torque, force[a] = the sum of its pairs' forces and
+/// torque[a] = the sum of their lever moments n x F_t (not yet times R_a), its own entries' history,
+/// and the pair's results into body b's entry of the pair (the mirror entry: one writer per entry, so
+/// no thread writes where another reads or writes). A pair apart costs one distance test (and clears
+/// its entries when it parts). finish_grain_forces() then completes every grain.
 template <int Dim, class Law>
-void add_grain_contacts(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, ContactHistory<Dim>& history,
-                        const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law,
-                        double dt, PairScratch<Dim>& scratch) {
+void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, ContactHistory<Dim>& history,
+                     const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law, double dt,
+                     PairScratch<Dim>& scratch) {
     using Vec = core::Vec<Dim>;
-    const Vec* x = std::as_const(grains).position();
-    const Vec* v = std::as_const(grains).velocity();
-    const Spin<Dim>* w = std::as_const(grains).angular_velocity();
-    const double* radius = std::as_const(grains).radius();
-    const double* mass = std::as_const(grains).mass();
-    const std::int32_t* material = std::as_const(grains).material();
-    Vec* force = grains.force();
-    Spin<Dim>* torque = grains.torque();
-    Vec* h = history.values();
-    const Index* neighbor = list.indices();
-    const Index* mirror = list.mirrors();
-    scratch.force.resize(list.entry_count());
-    scratch.lever_moment.resize(list.entry_count());
-    Vec* pair_force = scratch.force.data();
-    Spin<Dim>* pair_moment = scratch.lever_moment.data();
+    if (scratch.touching.size() != list.entry_count()) scratch.reset(list.entry_count());
+    // The arrays, copied into each grain's call: a local copy stays in registers, where pointers read
+    // through the closure would be reloaded after every store to the byte flags (which may alias them).
+    const struct {
+        const Vec* x;
+        const Vec* v;
+        const Spin<Dim>* w;
+        const double* radius;
+        const double* mass;
+        const std::int32_t* material;
+        Vec* force;
+        Spin<Dim>* torque;
+        Vec* h;
+        const Index* neighbor;
+        const Index* mirror;
+        typename PairScratch<Dim>::Result* result;
+        std::uint8_t* touching;
+    } arrays{std::as_const(grains).position(), std::as_const(grains).velocity(),
+             std::as_const(grains).angular_velocity(), std::as_const(grains).radius(),
+             std::as_const(grains).mass(), std::as_const(grains).material(), grains.force(), grains.torque(),
+             history.values(), list.indices(), list.mirrors(), scratch.result.data(),
+             scratch.touching.data()};
     for_each_grain(grains.size(), [&](Index a) {
-        const Vec xa = x[a];
-        const double ra = radius[a];
-        for (Index k = list.begin(a); k < list.split(a); ++k) {  // partners of higher id
-            const Index b = neighbor[k];
-            const Vec d = domain.nearest_image(x[b] - xa);
-            const double reach = ra + radius[b];
+        const auto p = arrays;
+        const Vec xa = p.x[a], va = p.v[a];
+        const Spin<Dim> wra = p.w[a] * p.radius[a];
+        const double ra = p.radius[a], ma = p.mass[a];
+        const std::int32_t mat_a = p.material[a];
+        Vec fa = Vec::zero();
+        Spin<Dim> ta = zero_spin<Dim>();
+        const Index first = list.begin(a), last = list.split(a);
+        for (Index k = first; k < last; ++k) {  // partners of higher id
+            const Index b = p.neighbor[k];
+            const Vec d = domain.nearest_image(p.x[b] - xa);
+            const double reach = ra + p.radius[b];
             const double r2 = core::norm2(d);
             if (r2 >= reach * reach) {
-                h[k] = Vec::zero();
-                pair_force[k] = Vec::zero();
-                pair_moment[k] = zero_spin<Dim>();
+                if (p.touching[k]) {
+                    p.h[k] = Vec::zero();
+                    p.touching[k] = 0;
+                    p.touching[p.mirror[k]] = 0;
+                }
                 continue;
             }
             const double r = std::sqrt(r2);
             const Vec n = d * (1.0 / r);
-            const Vec vab = v[a] - v[b] + spin_cross<Dim>(w[a] * ra + w[b] * radius[b], n);
-            const ContactKinematics c{reach - r, 0.0, ra, radius[b], mass[a], mass[b]};
+            const Vec vab = va - p.v[b] + spin_cross<Dim>(wra + p.w[b] * p.radius[b], n);
+            const ContactKinematics c{reach - r, 0.0, ra, p.radius[b], ma, p.mass[b]};
             const ContactResponse<Dim> res =
-                contact_response<Dim>(law, materials.at(material[a], material[b]), n, vab, c, h[k], dt);
-            h[k] = res.history;
-            pair_force[k] = res.force;
-            pair_moment[k] = res.lever_moment;
+                contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt);
+            p.h[k] = res.history;
+            const Index m = p.mirror[k];
+            p.result[m] = {res.force, res.lever_moment};
+            if (!p.touching[k]) {  // a new contact (mostly they last)
+                p.touching[k] = 1;
+                p.touching[m] = 1;
+            }
+            fa += res.force;
+            ta += res.lever_moment;
         }
-    });
-    for_each_grain(grains.size(), [&](Index i) {
-        Vec f = Vec::zero();
-        Spin<Dim> t = zero_spin<Dim>();
-        for (Index k = list.begin(i); k < list.split(i); ++k) {  // i is body a
-            f += pair_force[k];
-            t += pair_moment[k];
-        }
-        for (Index k = list.split(i); k < list.end(i); ++k) {  // i is body b: the exact negative
-            f -= pair_force[mirror[k]];
-            t += pair_moment[mirror[k]];
-        }
-        force[i] += f;
-        torque[i] += t * radius[i];
+        p.force[a] = fa;
+        p.torque[a] = ta;
     });
 }
 
-/// Adds the contact force and torque of every plane wall to each grain; wall_history[w][i] is grain i's
-/// tangential history against wall w. The wall is body b: infinite radius and mass, at rest.
+/// Completes the force stage after grain_pair_pass(): adds to each grain, as body b, the exact negative
+/// of its pairs' forces (from its own entries, where body a left them, so the two grains of a pair
+/// receive equal and opposite forces bit for bit), its weight m g and the contacts of the plane walls (wall_history[w][i]
+/// is grain i's tangential history against wall w; a wall is body b of infinite radius and mass, at
+/// rest). With half_kick != 0 it then kicks the grain, v += half_kick F/m, w += half_kick T/I (the
+/// second half kick of a step no external stage adds forces to). Each grain writes only its own data.
 template <int Dim, class Law>
-void add_wall_contacts(GrainSet<Dim>& grains, const std::vector<PlaneWall<Dim>>& walls,
-                       const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
-                       const Law& law, double dt) {
+void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, const PairScratch<Dim>& scratch,
+                         const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
+                         const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
+                         const Law& law, double dt, double half_kick) {
     using Vec = core::Vec<Dim>;
     const Vec* x = std::as_const(grains).position();
-    const Vec* v = std::as_const(grains).velocity();
-    const Spin<Dim>* w = std::as_const(grains).angular_velocity();
+    Vec* v = grains.velocity();
+    Spin<Dim>* w = grains.angular_velocity();
     const double* radius = std::as_const(grains).radius();
     const double* mass = std::as_const(grains).mass();
+    const double* inertia = std::as_const(grains).inertia();
     const std::int32_t* material = std::as_const(grains).material();
     Vec* force = grains.force();
     Spin<Dim>* torque = grains.torque();
+    const typename PairScratch<Dim>::Result* results = scratch.result.data();
+    const std::uint8_t* touching = scratch.touching.data();
     constexpr double infinite = std::numeric_limits<double>::infinity();
+    const bool kick = half_kick != 0.0;
     for_each_grain(grains.size(), [&](Index i) {
+        Vec f = force[i];
+        Spin<Dim> t = torque[i];
+        const typename PairScratch<Dim>::Result* const pair = results;
+        const std::uint8_t* const on = touching;
+        const Index first = list.split(i), last = list.end(i);
+        for (Index k = first; k < last; ++k) {  // i is body b: the exact negative
+            if (!on[k]) continue;
+            f -= pair[k].force;
+            t += pair[k].lever_moment;
+        }
+        f = gravity * mass[i] + f;
+        t = t * radius[i];
         for (std::size_t s = 0; s < walls.size(); ++s) {
             const PlaneWall<Dim>& wall = walls[s];
             Vec& h = wall_history[s][i];
@@ -161,8 +206,14 @@ void add_wall_contacts(GrainSet<Dim>& grains, const std::vector<PlaneWall<Dim>>&
             const ContactResponse<Dim> res =
                 contact_response<Dim>(law, materials.at(material[i], wall.material), n, vab, c, h, dt);
             h = res.history;
-            force[i] += res.force;
-            torque[i] += res.lever_moment * radius[i];
+            f += res.force;
+            t += res.lever_moment * radius[i];
+        }
+        force[i] = f;
+        torque[i] = t;
+        if (kick) {
+            v[i] += f * (half_kick / mass[i]);
+            w[i] += t * (half_kick / inertia[i]);
         }
     });
 }

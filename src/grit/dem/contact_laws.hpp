@@ -21,8 +21,11 @@
 
 namespace grit::dem {
 
-/// x y / (x + y), the effective radius or mass of a pair; exact x for y = infinity (a wall).
-inline double effective(double x, double y) noexcept { return x / (1.0 + x / y); }
+/// x y / (x + y), the effective radius or mass of a pair; exactly x for y = infinity (a wall). One
+/// division (the branch goes the same way for a whole loop: grain pairs or a wall).
+inline double effective(double x, double y) noexcept {
+    return y == std::numeric_limits<double>::infinity() ? x : x * y / (x + y);
+}
 
 /// What a law needs to know of one contact (canonical orientation a -> b).
 struct ContactKinematics {
@@ -118,12 +121,10 @@ struct HertzMindlin {
 
     NormalContact normal(const ContactKinematics& c, const PairMaterial& p) const noexcept {
         const double s = std::sqrt(effective(c.radius_a, c.radius_b) * c.overlap);  // sqrt(R* delta)
-        const double root_s = std::sqrt(s);
-        const double m = effective(c.mass_a, c.mass_b);
         // 2 sqrt(5/6) xi sqrt(S m*) with S = 2 Y* s (normal) and 8 G* s (tangential).
-        const double g = 2.0 * std::sqrt(5.0 / 6.0) * p.damping_ratio * root_s;
-        const double gamma_n = g * std::sqrt(2.0 * p.youngs_effective * m);
-        const double gamma_t = g * std::sqrt(8.0 * p.shear_effective * m);
+        const double root_sm = std::sqrt(s * effective(c.mass_a, c.mass_b));
+        const double gamma_n = p.hertz_damping_normal * root_sm;
+        const double gamma_t = p.hertz_damping_tangential * root_sm;
         return {(4.0 / 3.0) * p.youngs_effective * s * c.overlap + gamma_n * c.approach_speed,
                 8.0 * p.shear_effective * s, gamma_t};
     }

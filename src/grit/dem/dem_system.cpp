@@ -87,6 +87,7 @@ void DemSystem<Dim>::rebuild_neighbors() {
     list_.build(grid, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), grains_.id(), n,
                 skin_);
     history_.restore(grains_.id(), list_);
+    scratch_.reset(list_.entry_count());
     lists_dirty_ = false;
     ++counters_.rebuilds;
 }
@@ -97,26 +98,33 @@ void DemSystem<Dim>::update_neighbors() {
 }
 
 template <int Dim>
-void DemSystem<Dim>::compute_forces(double dt) {
-    update_neighbors();
-    Vec* f = grains_.force();
-    auto* t = grains_.torque();
-    const double* m = std::as_const(grains_).mass();
-    const Vec g = parameters_.gravity;
-    for_each_grain(grains_.size(), [&](Index i) {
-        f[i] = g * m[i];
-        t[i] = zero_spin<Dim>();
-    });
+void DemSystem<Dim>::kick_drift(double dt) {
+    const Index n = grains_.size();
+    // The skin check rides on the drift's pass; fresh lists are due anyway when they are dirty.
+    const bool check = !lists_dirty_ && list_.grain_count() == n;
+    const double d2 = kick_drift_grains(grains_, 0.5 * dt, dt, check ? list_.reference_positions() : nullptr);
+    if (!check || list_.stale(d2, n)) rebuild_neighbors();
+}
+
+template <int Dim>
+void DemSystem<Dim>::force_stage(double dt, double half_kick) {
     std::vector<Vec*> wall_history;
     for (std::size_t s = 0; s < walls_.size(); ++s)
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            add_grain_contacts<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
-            if (!walls_.empty()) add_wall_contacts<Dim>(grains_, walls_, wall_history, pair_table_, law, dt);
+            grain_pair_pass<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+            finish_grain_forces<Dim>(grains_, list_, scratch_, parameters_.gravity, walls_, wall_history,
+                                     pair_table_, law, dt, half_kick);
         },
         law_);
     forces_ready_ = true;
+}
+
+template <int Dim>
+void DemSystem<Dim>::compute_forces(double dt) {
+    update_neighbors();
+    force_stage(dt, 0.0);
 }
 
 template <int Dim>
@@ -124,9 +132,8 @@ void DemSystem<Dim>::begin_step(double dt) {
     // Forces of a state no step has computed yet (new grains or walls): dt = 0 leaves the histories as
     // they are, so a repeated evaluation does not count their increment twice.
     if (!forces_ready_) compute_forces(0.0);
-    kick_grains(grains_, 0.5 * dt);
-    drift_grains(grains_, dt);
-    compute_forces(dt);
+    kick_drift(dt);
+    force_stage(dt, 0.0);
 }
 
 template <int Dim>
@@ -138,8 +145,13 @@ void DemSystem<Dim>::end_step(double dt) {
 
 template <int Dim>
 void DemSystem<Dim>::step(double dt) {
-    begin_step(dt);
-    end_step(dt);
+    // begin_step then end_step, with the second half kick in the force stage's last pass: three passes
+    // over the grains a step (kick and drift, pairs, completion and kick).
+    if (!forces_ready_) compute_forces(0.0);
+    kick_drift(dt);
+    force_stage(dt, 0.5 * dt);
+    time_ += dt;
+    ++counters_.steps;
 }
 
 template <int Dim>

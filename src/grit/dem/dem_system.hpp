@@ -90,6 +90,10 @@ public:
 
 private:
     void update_neighbors();
+    /// First half kick and drift, then fresh lists if a grain has moved more than skin/2.
+    void kick_drift(double dt);
+    /// Contact, weight and wall forces at the current lists; with half_kick != 0 the second half kick.
+    void force_stage(double dt, double half_kick);
     void rebuild_neighbors();
     double skin() const;
 

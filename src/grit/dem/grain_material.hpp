@@ -54,6 +54,10 @@ struct PairMaterial {
     double friction = 0.0;                      ///< mu of the pair [-]
     double restitution = 1.0;                   ///< e of the pair [-]
     double damping_ratio = 0.0;                 ///< xi(e) [-]
+    /// 2 sqrt(5/6) xi sqrt(2 Y*) and 2 sqrt(5/6) xi sqrt(8 G*): the Hertz dampings gamma_n, gamma_t are
+    /// these times sqrt(sqrt(R* delta) m*) (contact_laws.hpp), so a contact takes one square root for both.
+    double hertz_damping_normal = 0.0;
+    double hertz_damping_tangential = 0.0;
 };
 
 /// Pair properties of materials a and b. Friction and restitution of unlike materials are the mean of
@@ -71,6 +75,9 @@ inline PairMaterial pair_material(const GrainMaterial& a, const GrainMaterial& b
     p.friction = 0.5 * (a.friction + b.friction);
     p.restitution = a.restitution == b.restitution ? a.restitution : 0.5 * (a.restitution + b.restitution);
     p.damping_ratio = dem::damping_ratio(p.restitution);
+    const double g = 2.0 * std::sqrt(5.0 / 6.0) * p.damping_ratio;
+    p.hertz_damping_normal = g * std::sqrt(2.0 * p.youngs_effective);
+    p.hertz_damping_tangential = g * std::sqrt(8.0 * p.shear_effective);
     return p;
 }
 

@@ -129,8 +129,7 @@ void GrainNeighborList<Dim>::build(const GrainGrid<Dim>& grid, const GrainDomain
 template <int Dim>
 bool GrainNeighborList<Dim>::stale(const Vec* x, Index n) const {
     if (static_cast<std::size_t>(n) != reference_positions_.size()) return true;
-    const double d2 = max_over_grains(n, 0.0, [&](Index i) { return core::norm2(x[i] - reference_positions_[i]); });
-    return 4.0 * d2 > skin_ * skin_;
+    return stale(max_over_grains(n, 0.0, [&](Index i) { return core::norm2(x[i] - reference_positions_[i]); }), n);
 }
 
 template class GrainNeighborList<2>;

@@ -107,6 +107,12 @@ public:
 
     /// True when a grain has moved more than skin/2 since the build, or the count has changed.
     bool stale(const Vec* x, Index n) const;
+    /// The positions at the build (one per grain), from which stale() measures the displacements.
+    const Vec* reference_positions() const noexcept { return reference_positions_.data(); }
+    /// stale() for n grains whose largest squared displacement from reference_positions() is max_d2.
+    bool stale(double max_d2, Index n) const noexcept {
+        return static_cast<std::size_t>(n) != reference_positions_.size() || 4.0 * max_d2 > skin_ * skin_;
+    }
 
 private:
     std::vector<Index> offsets_{0};
