@@ -22,6 +22,9 @@ struct SolidWorkspace {
     std::vector<double> energy_rate;                  ///< de/dt [W/kg]
     std::vector<core::SymTensor3> correction;         ///< kernel gradient correction L (symmetric)
     std::vector<core::SymTensor3> stress_term;        ///< sigma / rho^2 [m^5/(kg s^2)]
+    /// Per neighbour-list entry of a solid particle, from the correction pass for the main pass: the
+    /// kernel's gradient factor (dW/dr)/r and the artificial stress weight (W(r)/W(dx))^n.
+    std::vector<double> pair_gradient, pair_stress_weight;
 };
 
 template <int Dim>
