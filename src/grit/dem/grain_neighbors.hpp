@@ -68,9 +68,12 @@ struct GrainGrid {
         }
         return c;
     }
+    /// Cell number with x slowest: grains sorted by cell then split between threads along x, so each
+    /// thread gets its share of a settled bed (with z slowest one thread got the bed, the other the
+    /// grains falling above it).
     Index linear(const std::array<Index, Dim>& c) const noexcept {
-        Index id = c[Dim - 1];
-        for (int k = Dim - 2; k >= 0; --k) id = id * dims[k] + c[k];
+        Index id = c[0];
+        for (int k = 1; k < Dim; ++k) id = id * dims[k] + c[k];
         return id;
     }
 };
