@@ -4,9 +4,13 @@
 // dent. Reference: conservation of momentum (exact for the closed system).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
+#include "grit/io/case_reader.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
 
@@ -68,6 +72,61 @@ TEST(GrainImpact, DropTestCaseReboundsByRestitutionSquared) {
             EXPECT_NEAR(log[k].angle, 90.0, 1e-6);
         }
     }
+}
+
+}  // namespace
+
+namespace {
+
+// Grain-wall contact against the boundary particles of the SPH walls (not a plane): a garnet grain
+// dropped onto a block of wall particles bounces off it and never sinks into it.
+TEST(GrainImpact, GrainBouncesOffWallParticles) {
+    const auto file = std::filesystem::temp_directory_path() / "grit_grain_on_wall_particles.toml";
+    {
+        std::ofstream out(file);
+        out << R"([simulation]
+dimension = 2
+[time]
+end = 0.02
+[output]
+interval = 0.01
+[numerics]
+particle_spacing = 2.5e-4
+[physics]
+gravity = [0.0, -9.81]
+[[wall]]
+shape = "box"
+min = [-5.0e-3, -1.0e-3]
+max = [5.0e-3, 0.0]
+material = "water"
+[[grains]]
+arrangement = "single"
+position = [0.0, 1.5e-3]
+diameter = 2.0e-3
+[domain]
+min = [-6.0e-3, -2.0e-3]
+max = [6.0e-3, 6.0e-3]
+)";
+    }
+    grit::sim::Simulation<2> sim(grit::io::read_case(file), in_memory());
+    std::filesystem::remove(file);
+    // The wall's top particles sit at y = -dx/2; the grain's surface may reach d_ini above them.
+    // Dropped from rest 0.5 mm above the wall: it reaches about sqrt(2 g 0.5 mm) = 0.1 m/s.
+    double lowest = 1.0, upward = -1.0, highest_after = -1.0;
+    const auto& grains = sim.grains()->system().grains();
+    sim.advance_to(0.02, [&] {
+        const double y = grains.position()[0][1], vy = grains.velocity()[0][1];
+        lowest = std::min(lowest, y - 1.0e-3);
+        upward = std::max(upward, vy);
+        if (upward > 0.0) highest_after = std::max(highest_after, y);
+    });
+    std::printf("lowest surface %.3g m, rebound %.3g m/s, highest after %.4g m\n", lowest, upward, highest_after);
+    EXPECT_GT(lowest, -1.25e-4) << "the grain sank into the wall particles";
+    EXPECT_GT(upward, 0.02) << "the grain did not bounce";
+    // The penalty contact creates no energy: the grain does not rise above its start.
+    EXPECT_LT(highest_after, 1.5e-3 + 1e-6);
+    ASSERT_FALSE(sim.grains()->impacts().empty());
+    EXPECT_EQ(sim.grains()->impacts().front().target, "wall");
 }
 
 }  // namespace
