@@ -109,32 +109,36 @@ void GrainPhase<Dim>::couple(double time, particles::SphParticles<Dim>& particle
     std::int32_t* mask = grains.fields().template get<std::int32_t>("contact_targets").data();
     const Index n = grains.size();
     std::vector<std::int32_t> near(static_cast<std::size_t>(n), 0), touching(static_cast<std::size_t>(n), 0);
-    std::vector<Vec> normal(static_cast<std::size_t>(n), Vec::zero());
-    std::vector<Index> first(static_cast<std::size_t>(n), -1);
+    // Per grain and target kind (0: SPH solid, 1: SPH wall): the summed normals of the new contacts and
+    // the first of them (particle order), which names the target and gives the relative velocity.
+    std::vector<Vec> normal(2 * static_cast<std::size_t>(n), Vec::zero());
+    std::vector<Index> first(2 * static_cast<std::size_t>(n), -1);
     const std::int32_t* phase = particles.phase();
     const auto& contacts = contact_.contacts();
     for (std::size_t k = 0; k < contacts.size(); ++k) {
         const auto& c = contacts[k];
-        const std::int32_t bit = phase[c.particle] == static_cast<std::int32_t>(Phase::wall) ? sph_wall_bit : sph_solid_bit;
+        const bool wall = phase[c.particle] == static_cast<std::int32_t>(Phase::wall);
+        const std::int32_t bit = wall ? sph_wall_bit : sph_solid_bit;
         const auto g = static_cast<std::size_t>(c.grain);
         near[g] |= bit;
         if (!c.touching) continue;
-        if (!(mask[g] & bit)) {
-            normal[g] += c.normal;
-            if (first[g] < 0) first[g] = static_cast<Index>(k);
-        }
         touching[g] |= bit;
+        if (mask[c.grain] & bit) continue;  // already in contact with this target
+        const std::size_t slot = 2 * g + (wall ? 1 : 0);
+        normal[slot] += c.normal;
+        if (first[slot] < 0) first[slot] = static_cast<Index>(k);
     }
     for (Index g = 0; g < n; ++g) {
         const auto gi = static_cast<std::size_t>(g);
-        const std::int32_t fresh = touching[gi] & ~mask[g];
-        if (fresh) {
-            const auto& c = contacts[static_cast<std::size_t>(first[gi])];
+        for (const std::size_t kind : {std::size_t{0}, std::size_t{1}}) {
+            const Index k = first[2 * gi + kind];
+            if (k < 0) continue;
+            const auto& c = contacts[static_cast<std::size_t>(k)];
             const Vec vrel = grains.velocity()[g] - particles.velocity()[c.particle];
-            const std::string target = fresh & sph_wall_bit && !(fresh & sph_solid_bit)
-                                           ? std::string("wall")
-                                           : materials[static_cast<std::size_t>(particles.material()[c.particle])].name;
-            impacts_.push_back({time, grains.id()[g], target, core::norm(vrel), impact_angle<Dim>(vrel, normal[gi])});
+            const std::string target =
+                kind == 1 ? std::string("wall") : materials[static_cast<std::size_t>(particles.material()[c.particle])].name;
+            impacts_.push_back(
+                {time, grains.id()[g], target, core::norm(vrel), impact_angle<Dim>(vrel, normal[2 * gi + kind])});
         }
         // Bits stay set while the target is near; new contacts set them.
         mask[g] = (mask[g] & ~(sph_wall_bit | sph_solid_bit)) | (mask[g] & near[gi]) | touching[gi];
