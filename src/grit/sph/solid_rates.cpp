@@ -50,12 +50,19 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     // artificial stress from sigma.
     const double eps_as = prm.artificial_stress;
     work.stress_term.assign(static_cast<std::size_t>(n), SymTensor3::zero());
+    // Whether a particle's R is non-zero (tension): pairs of two compressed particles skip the term.
+    work.has_artificial_stress.assign(static_cast<std::size_t>(n), 0);
+    std::uint8_t* has_art = work.has_artificial_stress.data();
     SymTensor3* stress_term = work.stress_term.data();
     parallel::for_each(n, [&](Index i) {
         if (phase[i] != solid) return;
         const SymTensor3 sigma = tau[i] - SymTensor3::identity() * p[i];
         stress_term[i] = sigma * (1.0 / (rho[i] * rho[i]));
-        if (eps_as > 0.0) art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
+        if (eps_as > 0.0) {
+            art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
+            has_art[i] = art[i].xx != 0.0 || art[i].yy != 0.0 || art[i].zz != 0.0 || art[i].xy != 0.0 ||
+                         art[i].yz != 0.0 || art[i].zx != 0.0;
+        }
     });
     // Kernel gradient correction (Randles & Libersky 1996; second seed paper eq. 8), per solid particle:
     // L = [sum_b V_b grad_a W_ab (x) (x_b - x_a)]^-1 over solid neighbours. With it, eq. (31) is exact
@@ -113,6 +120,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const double rho_a = rho[a];
         const double p_term_a = p_term[a];
         const SymTensor3 art_a = art[a];
+        const std::uint8_t has_art_a = has_art[a];
         const PairCoefficients& ca = coef[mat[a]];
 
         const SymTensor3 la = corr[a];
@@ -156,7 +164,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const Vec ca_grad = dot(la, grad);     // L_a grad W
             const Vec cb_grad = dot(corr[b], grad);  // L_b grad W
             Vec force = dot(sigma_a, ca_grad) + dot(stress_term[b], cb_grad);
-            if (eps_as > 0.0) {
+            if (eps_as > 0.0 && (has_art_a | has_art[b])) {
                 const Vec as_force = dot<Dim>((art_a + art[b]) * pair_w[k], grad);
                 force += as_force;
                 // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.

@@ -3,6 +3,7 @@
 // and the specific internal energy rate.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "grit/core/sym_tensor.hpp"
@@ -25,6 +26,7 @@ struct SolidWorkspace {
     /// Per neighbour-list entry of a solid particle, from the correction pass for the main pass: the
     /// kernel's gradient factor (dW/dr)/r and the artificial stress weight (W(r)/W(dx))^n.
     std::vector<double> pair_gradient, pair_stress_weight;
+    std::vector<std::uint8_t> has_artificial_stress;  ///< R != 0 (a principal stress in tension)
 };
 
 template <int Dim>
