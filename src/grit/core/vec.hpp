@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace grit::core {
 
@@ -66,6 +67,14 @@ constexpr bool all_finite(const Vec<Dim>& a) noexcept {
     for (int k = 0; k < Dim; ++k)
         if (!std::isfinite(a.c[k])) return false;
     return true;
+}
+
+/// The first Dim values of `v` (a case file's array, already checked to have Dim numbers).
+template <int Dim>
+Vec<Dim> to_vec(const std::vector<double>& v) {
+    Vec<Dim> x{};
+    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
+    return x;
 }
 
 }  // namespace grit::core

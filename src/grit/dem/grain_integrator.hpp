@@ -10,49 +10,49 @@
 #include "grit/dem/contact_laws.hpp"
 #include "grit/dem/grain_material.hpp"
 #include "grit/dem/grain_set.hpp"
+#include "grit/dem/spin.hpp"
 #include "grit/dem/grain_loop.hpp"
 
 namespace grit::dem {
 
-/// Half kick: v += dt/2 F/m and w += dt/2 T/I (eq. 1; spheres and discs have isotropic inertia, so the
-/// gyroscopic term of the second paper's eq. 10 vanishes).
+/// Half kick of grain i: v += dt/2 F/m and w += dt/2 T/I (eq. 1; spheres and discs have isotropic
+/// inertia, so the gyroscopic term of the second paper's eq. 10 vanishes).
+template <int Dim>
+struct GrainKick {
+    core::Vec<Dim>* v;
+    Spin<Dim>* w;
+    const core::Vec<Dim>* f;
+    const Spin<Dim>* t;
+    const double* m;
+    const double* inertia;
+
+    explicit GrainKick(GrainSet<Dim>& grains)
+        : v(grains.velocity()), w(grains.angular_velocity()), f(std::as_const(grains).force()),
+          t(std::as_const(grains).torque()), m(std::as_const(grains).mass()),
+          inertia(std::as_const(grains).inertia()) {}
+    void operator()(Index i, double half_dt) const noexcept {
+        v[i] += f[i] * (half_dt / m[i]);
+        w[i] += t[i] * (half_dt / inertia[i]);
+    }
+};
+
+/// Half kick of every grain.
 template <int Dim>
 void kick_grains(GrainSet<Dim>& grains, double half_dt) {
-    auto* v = grains.velocity();
-    auto* w = grains.angular_velocity();
-    const auto* f = std::as_const(grains).force();
-    const auto* t = std::as_const(grains).torque();
-    const double* m = std::as_const(grains).mass();
-    const double* inertia = std::as_const(grains).inertia();
-    for_each_grain(grains.size(), [&](Index i) {
-        v[i] += f[i] * (half_dt / m[i]);
-        w[i] += t[i] * (half_dt / inertia[i]);
-    });
+    const GrainKick<Dim> kick(grains);
+    for_each_grain(grains.size(), [&](Index i) { kick(i, half_dt); });
 }
 
-/// Drift: x += dt v. (Orientation is not tracked: grains are round.)
-template <int Dim>
-void drift_grains(GrainSet<Dim>& grains, double dt) {
-    auto* x = grains.position();
-    const auto* v = std::as_const(grains).velocity();
-    for_each_grain(grains.size(), [&](Index i) { x[i] += v[i] * dt; });
-}
-
-/// The first half kick and the drift of a step in one pass over the grains; returns the largest squared
-/// distance of a grain from reference[i] after the drift (0 when reference is null), for the neighbour
-/// lists' skin check. Each grain gives the same values as kick_grains() then drift_grains().
+/// The first half kick and the drift (x += dt v; orientation is not tracked: grains are round) of a
+/// step in one pass over the grains; returns the largest squared distance of a grain from reference[i]
+/// after the drift (0 when reference is null), for the neighbour lists' skin check.
 template <int Dim>
 double kick_drift_grains(GrainSet<Dim>& grains, double half_dt, double dt, const core::Vec<Dim>* reference) {
+    const GrainKick<Dim> kick(grains);
     auto* x = grains.position();
-    auto* v = grains.velocity();
-    auto* w = grains.angular_velocity();
-    const auto* f = std::as_const(grains).force();
-    const auto* t = std::as_const(grains).torque();
-    const double* m = std::as_const(grains).mass();
-    const double* inertia = std::as_const(grains).inertia();
+    const auto* v = kick.v;
     return max_over_grains(grains.size(), 0.0, [&](Index i) {
-        v[i] += f[i] * (half_dt / m[i]);
-        w[i] += t[i] * (half_dt / inertia[i]);
+        kick(i, half_dt);
         x[i] += v[i] * dt;
         return reference ? core::norm2(x[i] - reference[i]) : 0.0;
     });

@@ -30,12 +30,7 @@ void for_each_lattice_point(const core::Vec<Dim>& lo, const core::Vec<Dim>& hi, 
     }
 }
 
-template <int Dim>
-core::Vec<Dim> to_vec(const std::vector<double>& v) {
-    core::Vec<Dim> x{};
-    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
-    return x;
-}
+using core::to_vec;
 
 }  // namespace
 

@@ -15,12 +15,7 @@ namespace grit::sim {
 
 namespace {
 
-template <int Dim>
-core::Vec<Dim> to_vec(const std::vector<double>& v) {
-    core::Vec<Dim> x{};
-    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
-    return x;
-}
+using core::to_vec;
 
 // Bits of the per-grain `contact_targets` field: plane walls 0..27, SPH walls 28, SPH solids 29.
 constexpr int max_planes = 28;

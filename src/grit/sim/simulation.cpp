@@ -23,12 +23,7 @@ namespace grit::sim {
 
 namespace {
 
-template <int Dim>
-core::Vec<Dim> to_vec(const std::vector<double>& v) {
-    core::Vec<Dim> x{};
-    for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
-    return x;
-}
+using core::to_vec;
 
 template <int Dim>
 bool inside(const core::Vec<Dim>& x, const std::vector<double>& lo, const std::vector<double>& hi) {
