@@ -292,27 +292,38 @@ material::Material read_material(const Section& s, const std::string& name) {
     if (auto d = s.maybe_text("description")) m.description = *d;
 
     const std::string current = std::visit([](const auto& e) { return std::string(e.name); }, m.eos);
-    const std::string eos = s.choice("eos", current, {"tait", "mie_gruneisen"});
+    const std::string eos = s.choice("eos", current, {"tait", "mie_gruneisen", "polynomial"});
     const double rho0 = s.number_or("reference_density", material::reference_density(m.eos), positive("[kg/m^3]"));
-    const double c0 = s.number_or("sound_speed", material::reference_sound_speed(m.eos), positive("[m/s]"));
-    if (eos == "tait") {
-        material::TaitEos t{rho0, c0, 7.0};
-        if (auto* old = std::get_if<material::TaitEos>(&m.eos)) t.gamma = old->gamma;
-        t.gamma = s.number_or("gamma", t.gamma, positive("[-]"));
-        m.eos = t;
+    if (eos == "polynomial") {
+        // Eq. (40): c0 = sqrt(K1 / rho0) follows from the bulk modulus, so it is not a key here.
+        if (s.has("sound_speed")) s.fail("sound_speed", "is sqrt(k1 / reference_density) for eos = \"polynomial\"; set k1");
+        const auto* old = std::get_if<material::PolynomialEos>(&m.eos);
+        if (!old && !s.has("k1")) s.fail("k1", "is required for eos = \"polynomial\" (bulk modulus K1 [Pa])");
+        const double k1 = s.number_or("k1", old ? old->k1 : 0.0, positive("[Pa]"));
+        const double k2 = s.number_or("k2", old ? old->k2 : 0.0);
+        const double k3 = s.number_or("k3", old ? old->k3 : 0.0);
+        m.eos = material::PolynomialEos{rho0, k1, k2, k3};
     } else {
-        material::MieGruneisenEos g{rho0, c0, 0.5, 0.0, 1.0, 0.0, 0.0};
-        if (auto* old = std::get_if<material::MieGruneisenEos>(&m.eos)) {
-            g = *old;
-            g.reference_density = rho0;
-            g.sound_speed = c0;
+        const double c0 = s.number_or("sound_speed", material::reference_sound_speed(m.eos), positive("[m/s]"));
+        if (eos == "tait") {
+            material::TaitEos t{rho0, c0, 7.0};
+            if (auto* old = std::get_if<material::TaitEos>(&m.eos)) t.gamma = old->gamma;
+            t.gamma = s.number_or("gamma", t.gamma, positive("[-]"));
+            m.eos = t;
+        } else {
+            material::MieGruneisenEos g{rho0, c0, 0.5, 0.0, 1.0, 0.0, 0.0};
+            if (auto* old = std::get_if<material::MieGruneisenEos>(&m.eos)) {
+                g = *old;
+                g.reference_density = rho0;
+                g.sound_speed = c0;
+            }
+            g.gruneisen_gamma = s.number_or("gruneisen_gamma", g.gruneisen_gamma, non_negative("[-]"));
+            g.volume_correction = s.number_or("volume_correction", g.volume_correction);
+            g.s1 = s.number_or("s1", g.s1);
+            g.s2 = s.number_or("s2", g.s2);
+            g.s3 = s.number_or("s3", g.s3);
+            m.eos = g;
         }
-        g.gruneisen_gamma = s.number_or("gruneisen_gamma", g.gruneisen_gamma, non_negative("[-]"));
-        g.volume_correction = s.number_or("volume_correction", g.volume_correction);
-        g.s1 = s.number_or("s1", g.s1);
-        g.s2 = s.number_or("s2", g.s2);
-        g.s3 = s.number_or("s3", g.s3);
-        m.eos = g;
     }
     m.dynamic_viscosity = s.number_or("dynamic_viscosity", m.dynamic_viscosity, non_negative("[Pa s]"));
     m.artificial_viscosity_alpha =
@@ -325,7 +336,7 @@ material::Material read_material(const Section& s, const std::string& name) {
     const std::string current_model = std::visit([](const auto& x) { return std::string(x.name); }, m.solid_model);
     if (was_solid || s.has("model") || s.has("shear_modulus")) {
         m.phase = Phase::solid;
-        const std::string model = s.choice("model", current_model, {"elastic", "johnson_cook"});
+        const std::string model = s.choice("model", current_model, {"elastic", "johnson_cook", "jh2"});
         m.solid.shear_modulus = s.number_or("shear_modulus", m.solid.shear_modulus, positive("[Pa]"));
         if (!(m.solid.shear_modulus > 0.0)) s.fail("shear_modulus", "is required for a solid [Pa]");
         m.solid.specific_heat = s.number_or("specific_heat", m.solid.specific_heat, non_negative("[J/(kg K)]"));
@@ -336,6 +347,33 @@ material::Material read_material(const Section& s, const std::string& name) {
             s.fail("adiabatic_heating", "needs specific_heat > 0 [J/(kg K)]");
         if (model == "elastic") {
             m.solid_model = material::ElasticSolid{};
+        } else if (model == "jh2") {
+            const auto* polynomial = std::get_if<material::PolynomialEos>(&m.eos);
+            if (!polynomial) s.fail("model", "\"jh2\" needs eos = \"polynomial\" (eq. 40, whose K1 the bulking of eq. 41 uses)");
+            material::JH2 jh2;
+            if (auto* old = std::get_if<material::JH2>(&m.solid_model)) jh2 = *old;
+            auto& st = jh2.strength;  // eq. (38)
+            st.hel_pressure = s.number_or("hel_pressure", st.hel_pressure, positive("[Pa]"));
+            st.hel_stress = s.number_or("hel_stress", st.hel_stress, positive("[Pa]"));
+            st.A = s.number_or("intact_coefficient", st.A, positive("[-]"));
+            st.N = s.number_or("intact_exponent", st.N, positive("[-]"));
+            st.B = s.number_or("fractured_coefficient", st.B, non_negative("[-]"));
+            st.M = s.number_or("fractured_exponent", st.M, positive("[-]"));
+            st.C = s.number_or("strain_rate_coefficient", st.C, non_negative("[-]"));
+            st.reference_strain_rate = s.number_or("reference_strain_rate", st.reference_strain_rate, positive("[1/s]"));
+            st.tensile_strength = s.number_or("tensile_strength", st.tensile_strength, non_negative("[-] (T* = T / P_HEL)"));
+            st.max_fractured_strength =
+                s.number_or("max_fractured_strength", st.max_fractured_strength, non_negative("[-] (sigma_fmax*)"));
+            auto& f = jh2.failure;  // eq. (39)
+            f.D1 = s.number_or("failure_d1", f.D1, positive("[-]"));
+            f.D2 = s.number_or("failure_d2", f.D2, non_negative("[-]"));
+            f.min_failure_strain = s.number_or("min_failure_strain", f.min_failure_strain, positive("[-]"));
+            jh2.bulking_fraction = s.number_or("bulking_fraction", jh2.bulking_fraction, in_range(0.0, 1.0));
+            for (const char* key : {"hel_pressure", "hel_stress", "intact_coefficient", "failure_d1"})
+                if (!std::get_if<material::JH2>(&m.solid_model) && !s.has(key))
+                    s.fail(key, "is required for a JH-2 solid (first seed paper Table 3)");
+            jh2.bind_eos(*polynomial);
+            m.solid_model = jh2;
         } else {
             material::JohnsonCook jc;
             if (auto* old = std::get_if<material::JohnsonCook>(&m.solid_model)) jc = *old;
@@ -673,6 +711,19 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.crater_x_min = crater.number("x_min");
         c.crater_x_max = crater.number("x_max");
         if (c.crater_x_max <= c.crater_x_min + dx) crater.fail("x_max", "must exceed x_min by more than a spacing [m]");
+    }
+
+    // Crack analysis: asked for with [cracks], and on by default for brittle (JH-2) solids.
+    c.crack_link_distance = 1.5 * dx;
+    for (const auto& m : c.materials)
+        if (std::holds_alternative<material::JH2>(m.solid_model)) c.has_cracks = true;
+    if (top.has("cracks")) {
+        const Section cracks = top.section("cracks");
+        if (c.solids.empty()) throw InputError("key 'cracks': the crack analysis needs a [[solid]]");
+        c.has_cracks = true;
+        c.crack_damage_threshold = cracks.number_or("damage_threshold", c.crack_damage_threshold, in_range(1e-9, 1.0));
+        c.crack_link_distance = cracks.number_or("link_distance", c.crack_link_distance, positive("[m]"));
+        c.crack_min_particles = cracks.integer_or("min_particles", 3, 1, 1000000000);
     }
 
     const Section grain_materials = top.section("grain_materials");

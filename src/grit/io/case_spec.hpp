@@ -141,6 +141,11 @@ struct CaseSpec {
 
     bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (2D)
     double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
+    /// Crack analysis (damaged_area, crack_count): on for [cracks] or any JH-2 solid.
+    bool has_cracks = false;
+    double crack_damage_threshold = 0.5;  ///< cracks.damage_threshold: D at or above it is damaged [-]
+    double crack_link_distance = 0.0;     ///< cracks.link_distance [m]; default 1.5 particle spacings
+    Index crack_min_particles = 3;        ///< cracks.min_particles: smaller clusters are not cracks
     std::vector<dem::GrainMaterial> grain_materials;  ///< the grain (and grain-wall) materials used
     std::vector<GrainBlockSpec> grains;
     std::vector<GrainWallSpec> grain_walls;

@@ -84,8 +84,44 @@ struct MieGruneisenEos {
     }
 };
 
+/// Polynomial EOS of brittle solids (JH-2), first seed paper eq. (40) without the bulking increment
+/// (which is per-point state, see johnson_holmquist.hpp):
+///   p = K1 mu + K2 mu^2 + K3 mu^3 (mu >= 0),  p = K1 mu (mu < 0),  mu = rho/rho0 - 1.
+/// The sound speed is the bulk one, sqrt(K1 / rho0), as c0 is for the metals' Mie-Grüneisen EOS.
+struct PolynomialEos {
+    static constexpr const char* name = "polynomial";
+    double reference_density;  ///< rho0 [kg/m^3]
+    double k1;                 ///< bulk modulus K1 [Pa]
+    double k2 = 0.0;           ///< K2 [Pa]
+    double k3 = 0.0;           ///< K3 [Pa]
+    double sound_speed = std::sqrt(k1 / reference_density);  ///< sqrt(K1/rho0) [m/s]; keep it so
+
+    PolynomialEos(double rho0, double bulk_modulus, double second = 0.0, double third = 0.0)
+        : reference_density(rho0), k1(bulk_modulus), k2(second), k3(third) {}
+
+    double cold_pressure(double mu) const noexcept {
+        return mu < 0.0 ? k1 * mu : mu * (k1 + mu * (k2 + mu * k3));
+    }
+    /// p(rho) [Pa]; the internal energy does not enter.
+    double pressure(double rho, double /*specific_energy*/ = 0.0) const noexcept {
+        return cold_pressure(rho / reference_density - 1.0);
+    }
+    /// rho(p) [kg/m^3] by Newton iteration (the cubic rises monotonically for Table 3's rocks).
+    double density(double p) const noexcept {
+        if (p <= 0.0) return reference_density * (1.0 + p / k1);
+        double mu = p / k1;
+        for (int it = 0; it < 50; ++it) {
+            const double slope = k1 + mu * (2.0 * k2 + 3.0 * k3 * mu);
+            const double step = (cold_pressure(mu) - p) / slope;
+            mu = std::max(mu - step, 0.0);
+            if (std::abs(step) < 1e-14 * (1.0 + mu)) break;
+        }
+        return reference_density * (1.0 + mu);
+    }
+};
+
 /// The equations of state a material may choose by name.
-using EquationOfState = std::variant<TaitEos, MieGruneisenEos>;
+using EquationOfState = std::variant<TaitEos, MieGruneisenEos, PolynomialEos>;
 
 inline double reference_density(const EquationOfState& eos) {
     return std::visit([](const auto& e) { return e.reference_density; }, eos);

@@ -44,6 +44,36 @@ Material make_metal(const MetalData& d) {
     return m;
 }
 
+/// The published data of one JH-2 brittle solid (first seed paper Table 3 layout).
+struct BrittleData {
+    const char* name;
+    const char* description;
+    double density;        ///< rho0 [kg/m^3]
+    double shear_modulus;  ///< G [Pa]
+    double k1, k2, k3;     ///< polynomial EOS, eq. (40) [Pa]
+    double beta;           ///< bulking energy fraction, eq. (41) [-]
+    JH2Strength strength;
+    JH2Failure failure;
+};
+
+/// A brittle solid: polynomial EOS (eq. 40) with bulking (eq. 41), JH-2 strength and damage (eqs. 38-39),
+/// artificial viscosity alpha = beta = 1.0 as for every solid (section 2).
+Material make_brittle(const BrittleData& d) {
+    Material m;
+    m.name = d.name;
+    m.description = d.description;
+    m.phase = Phase::solid;
+    const PolynomialEos eos{d.density, d.k1, d.k2, d.k3};
+    m.eos = eos;
+    m.artificial_viscosity_alpha = 1.0;
+    m.artificial_viscosity_beta = 1.0;
+    JH2 jh2{d.strength, d.failure, d.beta};
+    jh2.bind_eos(eos);
+    m.solid_model = jh2;
+    m.solid.shear_modulus = d.shear_modulus;
+    return m;
+}
+
 std::vector<Material> make_library() {
     std::vector<Material> lib;
 
@@ -95,6 +125,25 @@ std::vector<Material> make_library() {
                               {792.0e6, 510.0e6, 0.26, 0.014, 1.03, 1.0, 293.0, 1793.0},
                               {0.05, 3.44, -2.12, 0.002, 0.61, 1.0, 293.0, 1793.0}}));
 
+    // Brittle solids: JH-2 (eqs. 38-39), polynomial EOS with bulking (eqs. 40-41). Strength fields:
+    // A, N, B, M, C, T*, sigma_fmax*, P_HEL, sigma_HEL, reference rate.
+    lib.push_back(make_brittle({"red_sandstone",
+                                "Red sandstone, first seed paper Table 3 (its ref. 52, Huang, Li & Lu 2021): HEL 2.5 GPa",
+                                2460.0, 7.84e9, 10.45e9, 20.78e9, 22.69e9, 1.0,
+                                {0.88, 0.64, 0.293, 0.64, 0.00337, 0.0103, 0.25, 1.45e9, 1.58e9, 1.0},
+                                {0.05, 1.5}}));
+    lib.push_back(make_brittle({"granite",
+                                "Granite, first seed paper Table 3 (its ref. 53): HEL 4.5 GPa",
+                                2660.0, 21.9e9, 25.7e9, -386.0e9, 12800.0e9, 1.0,
+                                {1.248, 0.676, 0.68, 0.83, 0.0051, 0.0195, 0.16, 2.93e9, 2.36e9, 1.0},
+                                {0.008, 0.435}}));
+    lib.push_back(make_brittle({"silicon_carbide",
+                                "Silicon carbide (SiC-B), Holmquist & Johnson (2002), J. Appl. Phys. 91, 5858: "
+                                "HEL 14.567 GPa, T = 0.75 GPa, no strain-rate term; sigma_HEL = 1.5 (HEL - P_HEL)",
+                                3215.0, 193.0e9, 204.785e9, 0.0, 0.0, 1.0,
+                                {0.96, 0.65, 0.35, 1.0, 0.0, 0.75 / 5.9, 0.8, 5.9e9, 1.5 * (14.567e9 - 5.9e9), 1.0},
+                                {0.48, 0.48}}));
+
     return lib;
 }
 
@@ -118,10 +167,13 @@ std::string describe(const Material& m) {
     std::visit(
         [&](const auto& e) {
             using E = std::decay_t<decltype(e)>;
-            out += fmt::format("  eos = \"{}\"\n  reference_density = {} # [kg/m^3]\n  sound_speed = {} # [m/s]\n",
-                               E::name, e.reference_density, e.sound_speed);
+            out += fmt::format("  eos = \"{}\"\n  reference_density = {} # [kg/m^3]\n", E::name, e.reference_density);
+            if constexpr (!std::is_same_v<E, PolynomialEos>) out += fmt::format("  sound_speed = {} # [m/s]\n", e.sound_speed);
             if constexpr (std::is_same_v<E, TaitEos>) {
                 out += fmt::format("  gamma = {}\n", e.gamma);
+            } else if constexpr (std::is_same_v<E, PolynomialEos>) {
+                out += fmt::format("  k1 = {} # [Pa] (sound_speed = sqrt(k1 / rho0))\n  k2 = {} # [Pa]\n  k3 = {} # [Pa]\n",
+                                   e.k1, e.k2, e.k3);
             } else {
                 out += fmt::format("  gruneisen_gamma = {}\n  volume_correction = {}\n  s1 = {}\n  s2 = {}\n  s3 = {}\n",
                                    e.gruneisen_gamma, e.volume_correction, e.s1, e.s2, e.s3);
@@ -150,6 +202,20 @@ std::string describe(const Material& m) {
                 out += fmt::format("  failure = {}\n  failure_d1 = {}\n  failure_d2 = {}\n  failure_d3 = {}\n"
                                    "  failure_d4 = {}\n  failure_d5 = {}\n",
                                    model.failure_enabled, f.D1, f.D2, f.D3, f.D4, f.D5);
+            } else if constexpr (std::is_same_v<M, JH2>) {
+                const auto& s = model.strength;  // eq. (38)
+                out += fmt::format(
+                    "  hel_pressure = {} # [Pa] (P_HEL)\n  hel_stress = {} # [Pa] (sigma_HEL)\n"
+                    "  intact_coefficient = {} # (A)\n  intact_exponent = {} # (N)\n"
+                    "  fractured_coefficient = {} # (B)\n  fractured_exponent = {} # (M)\n"
+                    "  strain_rate_coefficient = {} # (C)\n  reference_strain_rate = {} # [1/s]\n"
+                    "  tensile_strength = {} # (T* = T / P_HEL)\n  max_fractured_strength = {} # (sigma_fmax*)\n",
+                    s.hel_pressure, s.hel_stress, s.A, s.N, s.B, s.M, s.C, s.reference_strain_rate,
+                    s.tensile_strength, s.max_fractured_strength);
+                out += fmt::format("  failure_d1 = {}\n  failure_d2 = {}\n  min_failure_strain = {}\n"
+                                   "  bulking_fraction = {} # (beta of eq. 41)\n",
+                                   model.failure.D1, model.failure.D2, model.failure.min_failure_strain,
+                                   model.bulking_fraction);
             }
         },
         m.solid_model);

@@ -1,16 +1,17 @@
 // Constitutive models of solids (laws only) and the update of one material point over one time
 // step: Jaumann stress rate (first seed paper eq. 30), von Mises radial return (eq. 32), plastic strain,
-// cumulative damage (eq. 36) and adiabatic heating. The SPH stage and the single-point driver call the
+// cumulative damage (eqs. 36, 39), bulking (eq. 41) and adiabatic heating. The SPH stage and the single-point driver call the
 // same function, so what the driver verifies is what the particles do.
 #pragma once
 
 #include <cmath>
-#include <limits>
 #include <string>
 #include <variant>
 
 #include "grit/core/sym_tensor.hpp"
+#include "grit/material/equation_of_state.hpp"
 #include "grit/material/johnson_cook.hpp"
+#include "grit/material/johnson_holmquist.hpp"
 
 namespace grit::material {
 
@@ -27,8 +28,24 @@ struct JohnsonCook {
     bool failure_enabled = true;
 };
 
+/// Johnson-Holmquist (JH-2) brittle strength, damage and bulking. Eq. (41) needs K1 and rho0 of the
+/// material's polynomial EOS (eq. 40): bind_eos copies them (the library and the case reader call it).
+struct JH2 {
+    static constexpr const char* name = "jh2";
+    JH2Strength strength;
+    JH2Failure failure;
+    double bulking_fraction = 1.0;   ///< beta of eq. (41), 0 <= beta <= 1 [-]
+    double bulk_modulus = 0.0;       ///< K1 [Pa]
+    double reference_density = 0.0;  ///< rho0 [kg/m^3]
+
+    void bind_eos(const PolynomialEos& eos) noexcept {
+        bulk_modulus = eos.k1;
+        reference_density = eos.reference_density;
+    }
+};
+
 /// The solid models a material may choose by name.
-using SolidModel = std::variant<ElasticSolid, JohnsonCook>;
+using SolidModel = std::variant<ElasticSolid, JohnsonCook, JH2>;
 
 /// Elastic and thermal data every solid has.
 struct SolidProperties {
@@ -49,8 +66,9 @@ struct SolidPointState {
     core::SymTensor3 deviatoric_stress;  ///< tau [Pa]
     double plastic_strain = 0.0;         ///< equivalent plastic strain eps_p [-]
     double plastic_strain_rate = 0.0;    ///< of the last step [1/s]
-    double damage = 0.0;                 ///< D of eq. (36) [-]
+    double damage = 0.0;                 ///< D of eq. (36) or (39) [-]
     double temperature = 293.0;          ///< [K]
+    double bulking_pressure = 0.0;       ///< dp of eqs. (40)-(41) (JH-2 only) [Pa]
 };
 
 /// Jaumann rate of the deviatoric stress, eq. (30): 2G (eps_dot - tr/3 I) + tau W^T + W tau
@@ -70,23 +88,11 @@ inline core::SymTensor3 jaumann_rate(const core::SymTensor3& tau, const core::Sy
             2.0 * shear_modulus * e.yz + rot(1, 2), 2.0 * shear_modulus * e.zx + rot(2, 0)};
 }
 
-/// Yield stress of the model [Pa] (infinite for an elastic solid).
-inline double yield_stress(const SolidModel& model, double plastic_strain, double rate, double temperature) {
-    return std::visit(
-        [&](const auto& m) -> double {
-            using M = std::decay_t<decltype(m)>;
-            if constexpr (std::is_same_v<M, JohnsonCook>)
-                return m.strength.yield_stress(plastic_strain, rate, temperature);
-            else
-                return std::numeric_limits<double>::infinity();
-        },
-        model);
-}
-
 /// Advances one material point by dt: trial stress from the Jaumann rate, radial return onto the
-/// yield surface (eq. 32) with sigma_vm_trial - 3 G d eps_p = sigma_y(eps_p + d eps_p), damage D += d eps_p /
-/// eps_f (eq. 36), heating dT = beta sigma_y d eps_p / (rho c_p). At D >= 1 the deviatoric stress
-/// is zero. `pressure` is p (positive in compression), used for the triaxiality -p / sigma_vm.
+/// yield surface (eq. 32). Johnson-Cook: sigma_vm_trial - 3 G d eps_p = sigma_y(eps_p + d eps_p), damage
+/// D += d eps_p / eps_f (eq. 36), heating dT = beta sigma_y d eps_p / (rho c_p). JH-2: strength from
+/// pressure and damage (eq. 38), damage (eq. 39), bulking pressure (eq. 41). At D >= 1 the deviatoric
+/// stress is zero and plastic strain stops. `pressure` is p (positive in compression); `density` rho.
 template <class Model>
 SolidPointState update_solid_point(const Model& model, const SolidProperties& props, const SolidPointState& s,
                                    const core::SymTensor3& strain_rate, const Spin& spin, double pressure,
@@ -140,6 +146,28 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
                 next.damage = std::min(1.0, s.damage + d_eps / eps_f);  // eq. (36)
                 if (next.damage >= 1.0) next.deviatoric_stress = core::SymTensor3::zero();
             }
+        }
+    } else if constexpr (std::is_same_v<Model, JH2>) {
+        // JH-2 (eqs. 38, 39, 41): no hardening, so the return is explicit at the strength of the start of
+        // the step, d eps_p = (sigma_vm_trial - sigma_y) / 3G. The damage this increment adds lowers the
+        // strength; the stress is returned onto the lowered surface, and the deviatoric elastic energy it
+        // loses, U = sigma_y^2 / 6G (Johnson & Holmquist 1994), feeds the bulking pressure.
+        const double vm_trial = trial.von_mises();
+        const core::SymTensor3 e = strain_rate.deviator();
+        const double rate = std::sqrt(2.0 / 3.0 * e.contract(e));
+        const double sigma_y0 = model.strength.yield_stress(pressure, s.damage, rate);
+        if (vm_trial > sigma_y0) {
+            const double three_g = 3.0 * props.shear_modulus;
+            const double d_eps = (vm_trial - sigma_y0) / three_g;
+            next.plastic_strain = s.plastic_strain + d_eps;
+            next.plastic_strain_rate = dt > 0.0 ? d_eps / dt : 0.0;
+            next.damage = std::min(1.0, s.damage + d_eps / model.failure.failure_strain(pressure, model.strength));
+            const double sigma_y = next.damage >= 1.0 ? 0.0 : model.strength.yield_stress(pressure, next.damage, rate);
+            next.deviatoric_stress = vm_trial > 0.0 ? trial * (sigma_y / vm_trial) : trial;
+            const double energy_loss = (sigma_y0 * sigma_y0 - sigma_y * sigma_y) / (2.0 * three_g);
+            const double mu = density / model.reference_density - 1.0;
+            next.bulking_pressure =
+                bulking_pressure(s.bulking_pressure, mu, model.bulk_modulus, model.bulking_fraction, energy_loss);
         }
     }
     return next;

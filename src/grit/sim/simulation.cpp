@@ -69,6 +69,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     domain_max_ = to_vec<Dim>(spec_.domain_max);
 
     has_solids_ = !spec_.solids.empty();
+    for (const auto& m : spec_.materials) brittle_.push_back(std::holds_alternative<material::JH2>(m.solid_model));
     solid_parameters_.gravity = fluid_parameters_.gravity;
     solid_parameters_.artificial_stress = spec_.artificial_stress;
     solid_parameters_.spacing = spacing_;
@@ -191,9 +192,11 @@ void Simulation<Dim>::build_pipeline() {
     pipeline_.add("neighbors", [this] { update_neighbors(false); });
     pipeline_.add("equation_of_state", [this] {
         sph::update_pressure(particles_, spec_.materials, Phase::fluid);
-        if (has_solids_)
+        if (has_solids_) {
             sph::update_pressure(particles_, spec_.materials, Phase::solid,
                                  particles_.fields().template get<double>("specific_energy").data());
+            apply_brittle_pressure();
+        }
     });
     pipeline_.add("wall_pressure", [this] {
         boundary::update_wall_pressure(particles_, neighbors_, kernel_, fluid_parameters_.gravity, spec_.materials);
@@ -291,7 +294,32 @@ void Simulation<Dim>::register_solid_fields() {
     f.add<double>("von_mises", 0.0, true);
     f.add<double>("temperature", 0.0, true);
     f.add<double>("specific_energy", 0.0, false);
+    f.add<double>("bulking_pressure", 0.0, true);
     f.add<std::int32_t>("fixed", 0, true);
+}
+
+template <int Dim>
+void Simulation<Dim>::apply_brittle_pressure() {
+    // JH-2 (eqs. 40-41): the polynomial EOS value plus the bulking increment in compression, and tension
+    // limited to -T (1 - D).
+    const auto& f = particles_.fields();
+    const double* damage = f.template get<double>("damage").data();
+    const double* bulking = f.template get<double>("bulking_pressure").data();
+    const double* rho = particles_.density();
+    double* p = particles_.pressure();
+    const std::int32_t* ph = particles_.phase();
+    const std::int32_t* mat = particles_.material();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    for (std::size_t m = 0; m < spec_.materials.size(); ++m) {
+        const auto* jh2 = std::get_if<material::JH2>(&spec_.materials[m].solid_model);
+        if (!jh2 || spec_.materials[m].phase != Phase::solid) continue;
+        const auto id = static_cast<std::int32_t>(m);
+        const double rho0 = jh2->reference_density, tension = jh2->strength.tensile_pressure();
+        parallel::for_each(particles_.size(), [&](Index i) {
+            if (ph[i] != solid || mat[i] != id) return;
+            p[i] = material::jh2_pressure(p[i], rho[i] / rho0 - 1.0, bulking[i], damage[i], tension);
+        });
+    }
 }
 
 template <int Dim>
@@ -306,6 +334,7 @@ void Simulation<Dim>::update_solid_stress() {
     double* vm = f.template get<double>("von_mises").data();
     double* temperature = f.template get<double>("temperature").data();
     double* energy = f.template get<double>("specific_energy").data();
+    double* bulking = f.template get<double>("bulking_pressure").data();
     const double* p = particles_.pressure();
     const double* rho = particles_.density();
     const std::int32_t* ph = particles_.phase();
@@ -323,12 +352,13 @@ void Simulation<Dim>::update_solid_stress() {
             [&](const auto& model) {
                 parallel::for_each(particles_.size(), [&](Index i) {
                     if (ph[i] != solid || mat[i] != id) return;
-                    material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i]};
+                    material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
                     s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt);
                     tau[i] = s.deviatoric_stress;
                     eps_p[i] = s.plastic_strain;
                     damage[i] = s.damage;
                     temperature[i] = s.temperature;
+                    bulking[i] = s.bulking_pressure;
                     vm[i] = s.deviatoric_stress.von_mises();
                     energy[i] += de[i] * dt;
                 });
@@ -339,18 +369,36 @@ void Simulation<Dim>::update_solid_stress() {
 
 template <int Dim>
 void Simulation<Dim>::remove_failed_solids() {
-    // Eq. (36): a particle with D >= 1 is removed and its mass booked as eroded.
+    // Ductile (eq. 36): a particle with D >= 1 is removed and its mass booked as eroded.
+    // Brittle (JH-2): a fractured particle still carries pressure, so it stays while it touches intact
+    // rock (a crack); it is removed once it is detached, when no solid particle within 1.5 spacings
+    // (its nearest and diagonal neighbours) has D < 1: loose fragments and comminuted rubble.
     const double* damage = particles_.fields().template get<double>("damage").data();
     const std::int32_t* ph = particles_.phase();
+    const std::int32_t* mat = particles_.material();
+    const Vec* x = particles_.position();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const Index n = particles_.size();
-    const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{ph[i] == solid && damage[i] >= 1.0}; });
+    const double reach2 = 2.25 * spacing_ * spacing_;
+    const Index* nb = neighbors_.indices();
+    std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
+    parallel::for_each(n, [&](Index i) {
+        if (ph[i] != solid || damage[i] < 1.0) return;
+        if (brittle_[static_cast<std::size_t>(mat[i])]) {
+            for (Index k = neighbors_.begin(i); k < neighbors_.end(i); ++k) {
+                const Index j = nb[k];
+                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(x[j] - x[i]) <= reach2) return;
+            }
+        }
+        gone[static_cast<std::size_t>(i)] = 1;
+    });
+    const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
     if (failed == 0) return;
     const double* m = particles_.mass();
     std::vector<Index> keep;
     keep.reserve(static_cast<std::size_t>(n - failed));
     for (Index i = 0; i < n; ++i) {
-        if (ph[i] == solid && damage[i] >= 1.0)
+        if (gone[static_cast<std::size_t>(i)])
             eroded_mass_ += m[i];
         else
             keep.push_back(i);
@@ -579,6 +627,8 @@ void Simulation<Dim>::write_output() {
             for (std::size_t b = 0; b < s.crater.x.size(); ++b)
                 out << fmt::format("{:.9g},{:.9g}\n", s.crater.x[b], s.crater.surface[b]);
         }
+        if (spec_.has_cracks)
+            row.insert(row.end(), {s.cracks.damaged_area, static_cast<double>(s.cracks.crack_count)});
     }
     if (grains_) {
         if (spec_.write_snapshots) grains_->write_snapshot(options_.output_dir, spec_.name, time_);
@@ -602,6 +652,10 @@ typename Simulation<Dim>::SolidMeasures Simulation<Dim>::solid_measures() const 
     out.max_plastic_strain =
         parallel::max(particles_.size(), 0.0, [&](Index i) { return ph[i] == solid ? eps_p[i] : 0.0; });
     out.internal_energy = parallel::sum(particles_.size(), 0.0, [&](Index i) { return ph[i] == solid ? m[i] * e[i] : 0.0; });
+    if (spec_.has_cracks)
+        out.cracks = analysis::analyse_cracks(
+            particles_, f.template get<double>("damage").data(),
+            {spec_.crack_damage_threshold, spec_.crack_link_distance, spec_.crack_min_particles});
     if constexpr (Dim == 2) {
         if (spec_.has_crater)
             out.crater = analysis::analyse_crater(
@@ -646,6 +700,9 @@ RunSummary Simulation<Dim>::summarize(double wall_time) const {
         s.has_crater = spec_.has_crater;
         s.crater_depth = m.crater.depth;
         s.crater_width = m.crater.width;
+        s.has_cracks = spec_.has_cracks;
+        s.damaged_area = m.cracks.damaged_area;
+        s.crack_count = m.cracks.crack_count;
     }
     return s;
 }
@@ -680,6 +737,10 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& stat
             j["crater_depth"] = s.crater_depth;
             j["crater_width"] = s.crater_width;
         }
+        if (s.has_cracks) {
+            j["damaged_area"] = s.damaged_area;
+            j["crack_count"] = s.crack_count;
+        }
     }
     if (s.has_grains) {
         j["grains"] = s.grains;
@@ -710,6 +771,7 @@ RunSummary Simulation<Dim>::run() {
         if (has_solids_) {
             columns.insert(columns.end(), {"eroded_mass", "max_plastic_strain", "internal_energy"});
             if (spec_.has_crater) columns.insert(columns.end(), {"crater_depth", "crater_width"});
+            if (spec_.has_cracks) columns.insert(columns.end(), {"damaged_area", "crack_count"});
         }
         if (grains_) {
             columns.insert(columns.end(), {"grains", "grain_kinetic_energy"});

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/analysis/cracks.hpp"
 #include "grit/analysis/crater.hpp"
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/boundary/jet_inlet.hpp"
@@ -43,6 +44,9 @@ struct RunSummary {
     bool has_solids = false, has_crater = false;
     double eroded_mass = 0.0, max_plastic_strain = 0.0, internal_energy = 0.0;
     double crater_depth = 0.0, crater_width = 0.0;
+    bool has_cracks = false;
+    double damaged_area = 0.0;  ///< [m^2 per metre of thickness in 2D; m^3 in 3D]
+    Index crack_count = 0;
     bool has_grains = false;
     Index grains = 0;
     double grain_kinetic_energy = 0.0;
@@ -101,9 +105,11 @@ private:
         double max_plastic_strain = 0.0;
         double internal_energy = 0.0;  ///< sum of m e over solids [J]
         analysis::CraterProfile crater;
+        analysis::CrackMeasures cracks;
     };
     SolidMeasures solid_measures() const;
     void update_solid_stress();
+    void apply_brittle_pressure();
     void remove_failed_solids();
     /// True for particles the integrator moves: fluid, and solids that are not clamped.
     bool moves(Index i) const;
@@ -125,6 +131,7 @@ private:
     sph::SolidRateParameters<Dim> solid_parameters_;
     sph::SolidWorkspace solid_workspace_;
     double eroded_mass_ = 0.0;
+    std::vector<bool> brittle_;  ///< per material: a JH-2 solid (fractured particles stay until detached)
     std::unique_ptr<GrainPhase<Dim>> grains_;
     double dt_stable_ = 0.0;  ///< the last stable step, before any shortening to land on an output time
     std::vector<boundary::JetInlet<Dim>> inlets_;

@@ -1,0 +1,130 @@
+// Crack analysis: damaged solid particles clustered by union-find over a cell grid.
+#include "grit/analysis/cracks.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grit/core/error.hpp"
+#include "grit/neighbors/cell_grid.hpp"
+
+namespace grit::analysis {
+
+namespace {
+
+/// Union-find with path compression (halving); the smaller index becomes the root, so the forest,
+/// like the clusters, does not depend on the order of the unions.
+struct DisjointSets {
+    std::vector<Index> parent;
+    explicit DisjointSets(Index n) : parent(static_cast<std::size_t>(n)) {
+        for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
+    }
+    Index find(Index i) {
+        while (parent[static_cast<std::size_t>(i)] != i) {
+            auto& p = parent[static_cast<std::size_t>(i)];
+            p = parent[static_cast<std::size_t>(p)];
+            i = p;
+        }
+        return i;
+    }
+    void unite(Index a, Index b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return;
+        if (b < a) std::swap(a, b);
+        parent[static_cast<std::size_t>(b)] = a;
+    }
+};
+
+/// A cell size of at least `link` whose grid over x[0..n) stays small: sparse damage spread over a
+/// large solid would otherwise ask CellGrid::covering for far more cells than particles.
+template <int Dim>
+double cell_size_for(const core::Vec<Dim>* x, Index n, double link) {
+    if (n == 0) return link;
+    core::Vec<Dim> lo = x[0], hi = x[0];
+    for (Index i = 1; i < n; ++i)
+        for (int k = 0; k < Dim; ++k) {
+            lo[k] = std::min(lo[k], x[i][k]);
+            hi[k] = std::max(hi[k], x[i][k]);
+        }
+    double size = link;
+    const double budget = 4.0 * (n + 1000.0);
+    while (true) {
+        double cells = 1.0;
+        for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / size + 2.0;
+        if (cells <= budget) return size;
+        size *= 2.0;
+    }
+}
+
+}  // namespace
+
+template <int Dim>
+CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const double* damage, const CrackOptions& options) {
+    if (!(options.link_distance > 0.0))
+        throw core::InputError("crack analysis: link_distance = " + std::to_string(options.link_distance) +
+                               " must be > 0");
+    CrackMeasures out;
+    const auto* x = ps.position();
+    const auto* phase = ps.phase();
+    const auto* m = ps.mass();
+    const auto* rho = ps.density();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+
+    // Damaged solid particles in index order; the area is summed serially in that order (deterministic).
+    std::vector<Index> damaged;
+    std::vector<core::Vec<Dim>> xd;
+    for (Index i = 0; i < ps.size(); ++i) {
+        if (phase[i] != solid || !(damage[i] >= options.damage_threshold)) continue;
+        damaged.push_back(i);
+        xd.push_back(x[i]);
+        out.damaged_area += m[i] / rho[i];
+    }
+    const auto n = static_cast<Index>(damaged.size());
+    out.damaged_particles = n;
+    if (n == 0) return out;
+
+    // Links: each damaged particle against the 3^Dim cells around it (cells are >= link_distance).
+    const double link2 = options.link_distance * options.link_distance;
+    const auto grid = neighbors::CellGrid<Dim>::covering(xd.data(), n, cell_size_for(xd.data(), n, options.link_distance));
+    std::vector<Index> order, cell_start;
+    neighbors::sort_by_cell(grid, xd.data(), n, order, cell_start);
+    DisjointSets sets(n);
+    for (Index a = 0; a < n; ++a) {
+        const auto c = grid.coords(xd[static_cast<std::size_t>(a)]);
+        std::array<Index, Dim> lo{}, hi{};
+        for (int k = 0; k < Dim; ++k) {
+            lo[k] = std::max<Index>(c[k] - 1, 0);
+            hi[k] = std::min<Index>(c[k] + 1, grid.dims[k] - 1);
+        }
+        auto cell = lo;
+        while (true) {
+            const auto id = static_cast<std::size_t>(grid.linear(cell));
+            for (Index s = cell_start[id]; s < cell_start[id + 1]; ++s) {
+                const Index b = order[static_cast<std::size_t>(s)];
+                if (b > a && core::norm2(xd[static_cast<std::size_t>(a)] - xd[static_cast<std::size_t>(b)]) <= link2)
+                    sets.unite(a, b);
+            }
+            // Next cell of the block, x fastest.
+            int k = 0;
+            for (; k < Dim && cell[k] == hi[k]; ++k) cell[k] = lo[k];
+            if (k == Dim) break;
+            ++cell[k];
+        }
+    }
+
+    std::vector<Index> members(static_cast<std::size_t>(n), 0);
+    for (Index a = 0; a < n; ++a) ++members[static_cast<std::size_t>(sets.find(a))];
+    for (const Index count : members) {
+        if (count >= options.min_particles && count > 0) ++out.crack_count;
+        out.largest_crack = std::max(out.largest_crack, count);
+    }
+    return out;
+}
+
+template CrackMeasures analyse_cracks<2>(const particles::SphParticles<2>&, const double*, const CrackOptions&);
+template CrackMeasures analyse_cracks<3>(const particles::SphParticles<3>&, const double*, const CrackOptions&);
+
+}  // namespace grit::analysis

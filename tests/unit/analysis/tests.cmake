@@ -1,0 +1,4 @@
+# grit::analysis unit tests, relative to tests/ (included from tests/CMakeLists.txt).
+set(GRIT_ANALYSIS_TEST_SOURCES
+  unit/analysis/test_cracks.cpp
+)
