@@ -125,6 +125,7 @@ private:
     sph::Kernel<Dim> kernel_;
     double spacing_, smoothing_length_;
     sph::FluidRateParameters<Dim> fluid_parameters_;
+    std::vector<double> signal_speed_;  ///< per material: the wave speed of the CFL condition [m/s]
     sph::SphWorkspace sph_workspace_;
     bool has_solids_ = false;
     bool has_sph_ = true;  ///< false for a grains-only case: the SPH stages are left out

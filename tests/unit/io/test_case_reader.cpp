@@ -529,6 +529,37 @@ TEST_F(CaseReaderTest, GrainErrorsNameKeyValueAndReason) {
     expect_error(grains_2d, {"grains[0].colour=red"}, {"grains[0].colour"});
 }
 
+// Brittle solids (JH-2): the shipped compression case, its defaults, and errors naming key and reason.
+TEST_F(CaseReaderTest, BrittleSolidKeysAndErrors) {
+    const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "compression_sandstone_2d" / "case.toml";
+    const CaseSpec c = read_case(file, {"materials.red_sandstone.failure_d1=0.04"});
+    EXPECT_TRUE(c.has_cracks);
+    EXPECT_DOUBLE_EQ(c.crack_link_distance, 1.5 * c.particle_spacing);
+    EXPECT_EQ(c.crack_min_particles, 3);
+    bool found = false;
+    for (const auto& m : c.materials)
+        if (m.name == "red_sandstone") {
+            found = true;
+            const auto& jh2 = std::get<grit::material::JH2>(m.solid_model);
+            EXPECT_DOUBLE_EQ(jh2.failure.D1, 0.04);
+            EXPECT_DOUBLE_EQ(jh2.bulk_modulus, 10.45e9);
+        }
+    EXPECT_TRUE(found);
+    expect_error_file(file, {"materials.sandstone_tab.eos=tait", "materials.sandstone_tab.model=jh2"},
+                      {"materials.sandstone_tab.model", "polynomial"});
+    expect_error_file(file, {"materials.sandstone_tab.sound_speed=2000"}, {"materials.sandstone_tab.sound_speed", "k1"});
+    expect_error_file(file, {"materials.red_sandstone.bulking_fraction=1.5"},
+                      {"materials.red_sandstone.bulking_fraction", "1.5", "[0, 1]"});
+    expect_error_file(file, {"materials.rock.eos=polynomial", "materials.rock.reference_density=2000",
+                             "materials.rock.shear_modulus=1e9", "materials.rock.model=jh2", "solid[0].material=rock"},
+                      {"materials.rock.k1", "is required"});
+    expect_error_file(file, {"materials.rock.eos=polynomial", "materials.rock.reference_density=2000",
+                             "materials.rock.k1=1e10", "materials.rock.shear_modulus=1e9", "materials.rock.model=jh2",
+                             "solid[0].material=rock"},
+                      {"materials.rock.hel_pressure", "is required"});
+    expect_error_file(file, {"cracks.link_distance=-0.001"}, {"cracks.link_distance", "must be positive"});
+}
+
 TEST_F(CaseReaderTest, DuplicateProbeName) {
     expect_error(replaced(minimal_2d, "name = \"front\"", "name = \"p_bottom\""), {},
                  {"probe[1].name", "\"p_bottom\"", "another probe"});
