@@ -109,22 +109,81 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             }
         }
     });
+    // M = (sigma / rho^2) L and the in-plane R, packed per particle for the pair pass.
+    constexpr int mm_size = Dim * Dim, r_size = Dim * (Dim + 1) / 2;
+    work.stress_correction.resize(static_cast<std::size_t>(n) * mm_size);
+    work.plane_artificial_stress.resize(static_cast<std::size_t>(n) * r_size);
+    double* packed_m = work.stress_correction.data();
+    double* packed_r = work.plane_artificial_stress.data();
+    parallel::for_each(n, [&](Index a) {
+        double* out = packed_m + static_cast<std::size_t>(a) * mm_size;
+        double* r = packed_r + static_cast<std::size_t>(a) * r_size;
+        if (phase[a] != solid) {  // zeros: the branch-free pair pass multiplies them by 0 weights
+            for (int i = 0; i < mm_size; ++i) out[i] = 0.0;
+            for (int i = 0; i < r_size; ++i) r[i] = 0.0;
+            return;
+        }
+        const SymTensor3& st = stress_term[a];
+        const SymTensor3& l = corr[a];
+        const double sm[3][3] = {{st.xx, st.xy, st.zx}, {st.xy, st.yy, st.yz}, {st.zx, st.yz, st.zz}};
+        const double lm[3][3] = {{l.xx, l.xy, l.zx}, {l.xy, l.yy, l.yz}, {l.zx, l.yz, l.zz}};
+        for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j) {
+                double sum = 0.0;
+                for (int k = 0; k < Dim; ++k) sum += sm[i][k] * lm[k][j];
+                out[i * Dim + j] = sum;
+            }
+        r[0] = art[a].xx;
+        r[1] = art[a].yy;
+        r[2] = art[a].xy;
+        if constexpr (Dim == 3) {
+            r[3] = art[a].zz;
+            r[4] = art[a].yz;
+            r[5] = art[a].zx;
+        }
+    });
+    // M . g and (R_a + R_b) . g over the packed layouts.
+    auto m_dot = [](const double* mm, const Vec& grad) {
+        Vec out;
+        for (int i = 0; i < Dim; ++i) {
+            double sum = 0.0;
+            for (int j = 0; j < Dim; ++j) sum += mm[i * Dim + j] * grad[j];
+            out[i] = sum;
+        }
+        return out;
+    };
+    auto r_sum_dot = [](const double* ra, const double* rb, double weight, const Vec& grad) {
+        Vec out;
+        const double xx = (ra[0] + rb[0]) * weight, yy = (ra[1] + rb[1]) * weight, xy = (ra[2] + rb[2]) * weight;
+        if constexpr (Dim == 2) {
+            out[0] = xx * grad[0] + xy * grad[1];
+            out[1] = xy * grad[0] + yy * grad[1];
+        } else {
+            const double zz = (ra[3] + rb[3]) * weight, yz = (ra[4] + rb[4]) * weight, zx = (ra[5] + rb[5]) * weight;
+            out[0] = xx * grad[0] + xy * grad[1] + zx * grad[2];
+            out[1] = xy * grad[0] + yy * grad[1] + yz * grad[2];
+            out[2] = zx * grad[0] + yz * grad[1] + zz * grad[2];
+        }
+        return out;
+    };
+
     const double h = kernel.h;
     const double eps_h2 = 0.01 * h * h;
     const Vec g = prm.gravity;
+    const auto wall = static_cast<std::int32_t>(Phase::wall);
+    if (!(eps_as > 0.0)) pair_w = pair_f;  // R = 0 everywhere then: any finite weight gives zero
 
     parallel::for_each(n, [&](Index a) {
         if (phase[a] != solid) return;
         const Vec xa = x[a];
         const Vec va = v[a];
+        const std::uint8_t has_art_a = has_art[a];
         const double rho_a = rho[a];
         const double p_term_a = p_term[a];
-        const SymTensor3 art_a = art[a];
-        const std::uint8_t has_art_a = has_art[a];
         const PairCoefficients& ca = coef[mat[a]];
-
         const SymTensor3 la = corr[a];
-        const SymTensor3 sigma_a = stress_term[a];  // sigma_a / rho_a^2
+        const double* m_a = packed_m + static_cast<std::size_t>(a) * mm_size;  // (sigma_a / rho_a^2) L_a
+        const double* r_a = packed_r + static_cast<std::size_t>(a) * r_size;
 
         Vec dv = Vec::zero();
         double continuity = 0.0, work_rate = 0.0;
@@ -149,23 +208,23 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             if (phase[b] != solid) {
                 // Pressure from fluid and wall neighbours; the multi-phase form (p_a + p_b)/(rho_a rho_b)
                 // of Colagrossi & Landrini (2003) across a fluid-solid interface.
-                const bool wall = phase[b] == static_cast<std::int32_t>(Phase::wall);
-                const double pressure = wall ? (p_term_a + p_term[b])
-                                             : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
+                const bool is_wall = phase[b] == wall;
+                const double pressure = is_wall ? (p_term_a + p_term[b])
+                                                : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
                 dv += xab * (-m[b] * pressure * f);
                 work_rate += 0.5 * m[b] * pressure * vx * f;
-                if (wall) continuity += volume_b * vx * f;  // eq. (28) against walls
+                if (is_wall) continuity += volume_b * vx * f;  // eq. (28) against walls
                 continue;
             }
             // Between solids, eq. (29) with the corrected kernel gradient of each particle:
             // sum_b m_b [sigma_a/rho_a^2 L_a + sigma_b/rho_b^2 L_b] grad W (antisymmetric per pair, so
-            // momentum is conserved), plus the artificial stress.
+            // momentum is conserved), plus the artificial stress (zero where both R are: compression).
             const Vec grad = xab * f;
-            const Vec ca_grad = dot(la, grad);     // L_a grad W
-            const Vec cb_grad = dot(corr[b], grad);  // L_b grad W
-            Vec force = dot(sigma_a, ca_grad) + dot(stress_term[b], cb_grad);
-            if (eps_as > 0.0 && (has_art_a | has_art[b])) {
-                const Vec as_force = dot<Dim>((art_a + art[b]) * pair_w[k], grad);
+            const Vec ca_grad = dot(la, grad);  // L_a grad W
+            const Vec own = m_dot(m_a, grad);   // sigma_a/rho_a^2 L_a grad W
+            Vec force = own + m_dot(packed_m + static_cast<std::size_t>(b) * mm_size, grad);
+            if (has_art_a | has_art[b]) {
+                const Vec as_force = r_sum_dot(r_a, packed_r + static_cast<std::size_t>(b) * r_size, pair_w[k], grad);
                 force += as_force;
                 // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.
                 work_rate -= 0.5 * m[b] * core::dot(as_force, vab);
@@ -173,7 +232,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             dv += force * m[b];
             // The matching internal-energy rate, -m_b sigma_a/rho_a^2 : (v_ab (x) L_a grad W): with the
             // momentum above, kinetic + internal energy is conserved pair by pair.
-            work_rate -= m[b] * double_dot(sigma_a, vab, ca_grad);
+            work_rate -= m[b] * core::dot(vab, own);
 
             // Strain rate and spin, eq. (31), with v_ba = -v_ab and the corrected gradient L_a grad W.
             const Vec u = vab * (-volume_b);

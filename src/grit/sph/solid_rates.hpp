@@ -27,6 +27,9 @@ struct SolidWorkspace {
     /// kernel's gradient factor (dW/dr)/r and the artificial stress weight (W(r)/W(dx))^n.
     std::vector<double> pair_gradient, pair_stress_weight;
     std::vector<std::uint8_t> has_artificial_stress;  ///< R != 0 (a principal stress in tension)
+    /// Per solid particle, compact for the pair pass: M = (sigma / rho^2) L (Dim x Dim, row-major) and
+    /// the in-plane R (xx, yy, xy[, zz, yz, zx]); a neighbour then costs 7 doubles (2D), not 18.
+    std::vector<double> stress_correction, plane_artificial_stress;
 };
 
 template <int Dim>
