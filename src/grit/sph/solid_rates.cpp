@@ -116,13 +116,9 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     double* packed_m = work.stress_correction.data();
     double* packed_r = work.plane_artificial_stress.data();
     parallel::for_each(n, [&](Index a) {
+        if (phase[a] != solid) return;  // read for solid neighbours only
         double* out = packed_m + static_cast<std::size_t>(a) * mm_size;
         double* r = packed_r + static_cast<std::size_t>(a) * r_size;
-        if (phase[a] != solid) {  // zeros: the branch-free pair pass multiplies them by 0 weights
-            for (int i = 0; i < mm_size; ++i) out[i] = 0.0;
-            for (int i = 0; i < r_size; ++i) r[i] = 0.0;
-            return;
-        }
         const SymTensor3& st = stress_term[a];
         const SymTensor3& l = corr[a];
         const double sm[3][3] = {{st.xx, st.xy, st.zx}, {st.xy, st.yy, st.yz}, {st.zx, st.yz, st.zz}};
@@ -171,7 +167,6 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const double eps_h2 = 0.01 * h * h;
     const Vec g = prm.gravity;
     const auto wall = static_cast<std::int32_t>(Phase::wall);
-    if (!(eps_as > 0.0)) pair_w = pair_f;  // R = 0 everywhere then: any finite weight gives zero
 
     parallel::for_each(n, [&](Index a) {
         if (phase[a] != solid) return;

@@ -24,12 +24,6 @@ inline core::Vec<Dim> dot(const core::SymTensor3& t, const core::Vec<Dim>& g) no
     return r;
 }
 
-/// sum_ij t_ij u_i c_j, i.e. t : (u (x) c).
-template <int Dim>
-inline double double_dot(const core::SymTensor3& t, const core::Vec<Dim>& u, const core::Vec<Dim>& c) noexcept {
-    return core::dot(u, dot(t, c));
-}
-
 /// s += sym(u (x) c): the symmetric part of one pair's velocity-gradient contribution.
 template <int Dim>
 inline void add_symmetric_outer(core::SymTensor3& s, const core::Vec<Dim>& u, const core::Vec<Dim>& c) noexcept {
