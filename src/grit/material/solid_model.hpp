@@ -75,17 +75,17 @@ struct SolidPointState {
 /// (the paper's tau^{a c} R^{b c} + tau^{b c} R^{a c}).
 inline core::SymTensor3 jaumann_rate(const core::SymTensor3& tau, const core::SymTensor3& strain_rate,
                                      const Spin& w, double shear_modulus) noexcept {
-    const double t[3][3] = {{tau.xx, tau.xy, tau.zx}, {tau.xy, tau.yy, tau.yz}, {tau.zx, tau.yz, tau.zz}};
-    const double r[3][3] = {{0.0, w.xy, -w.zx}, {-w.xy, 0.0, w.yz}, {w.zx, -w.yz, 0.0}};
-    auto rot = [&](int a, int b) {
-        double s = 0.0;
-        for (int g = 0; g < 3; ++g) s += t[a][g] * r[b][g] + t[b][g] * r[a][g];
-        return s;
-    };
+    // With R = [[0, w.xy, -w.zx], [-w.xy, 0, w.yz], [w.zx, -w.yz, 0]] the rotation term is Q + Q^T,
+    // Q = tau R^T, written out without R's zeros (per particle and step; the looped form was not inlined).
+    const double a = w.xy, b = w.yz, c = w.zx;
+    const double q00 = a * tau.xy - c * tau.zx, q11 = b * tau.yz - a * tau.xy, q22 = c * tau.zx - b * tau.yz;
+    const double q01 = b * tau.zx - a * tau.xx, q10 = a * tau.yy - c * tau.yz;
+    const double q12 = c * tau.xy - b * tau.yy, q21 = b * tau.zz - a * tau.zx;
+    const double q20 = a * tau.yz - c * tau.zz, q02 = c * tau.xx - b * tau.xy;
     const core::SymTensor3 e = strain_rate.deviator();
-    return {2.0 * shear_modulus * e.xx + rot(0, 0), 2.0 * shear_modulus * e.yy + rot(1, 1),
-            2.0 * shear_modulus * e.zz + rot(2, 2), 2.0 * shear_modulus * e.xy + rot(0, 1),
-            2.0 * shear_modulus * e.yz + rot(1, 2), 2.0 * shear_modulus * e.zx + rot(2, 0)};
+    const double g2 = 2.0 * shear_modulus;
+    return {g2 * e.xx + 2.0 * q00, g2 * e.yy + 2.0 * q11, g2 * e.zz + 2.0 * q22,
+            g2 * e.xy + q01 + q10, g2 * e.yz + q12 + q21, g2 * e.zx + q20 + q02};
 }
 
 /// Advances one material point by dt: trial stress from the Jaumann rate, radial return onto the
