@@ -53,8 +53,8 @@ struct JH2Strength {
 };
 
 /// JH-2 plastic strain to fracture, eq. (39): eps_f = D1 (P* + T*)^D2, D += d eps_p / eps_f.
-/// At P* <= -T* eps_f would be zero: the floor `min_failure_strain` keeps the sum finite, so a plastic
-/// increment there fractures the point at once.
+/// At P* <= -T* eps_f would be zero: the floor `min_failure_strain` keeps the sum finite, so plastic
+/// strain there fractures the point within a step or two.
 struct JH2Failure {
     double D1 = 0.0, D2 = 1.0;
     double min_failure_strain = 1e-6;  ///< [-]
