@@ -88,6 +88,12 @@ inline core::SymTensor3 jaumann_rate(const core::SymTensor3& tau, const core::Sy
             g2 * e.xy + q01 + q10, g2 * e.yz + q12 + q21, g2 * e.zx + q20 + q02};
 }
 
+/// The rate entering the strength laws: the equivalent deviatoric strain rate sqrt(2/3 e : e) [1/s].
+inline double equivalent_strain_rate(const core::SymTensor3& strain_rate) noexcept {
+    const core::SymTensor3 e = strain_rate.deviator();
+    return std::sqrt(2.0 / 3.0 * e.contract(e));
+}
+
 /// Advances one material point by dt: trial stress from the Jaumann rate, radial return onto the
 /// yield surface (eq. 32). Johnson-Cook: sigma_vm_trial - 3 G d eps_p = sigma_y(eps_p + d eps_p), damage
 /// D += d eps_p / eps_f (eq. 36), heating dT = beta sigma_y d eps_p / (rho c_p). JH-2: strength from
@@ -110,9 +116,7 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
     next.plastic_strain_rate = 0.0;
     if constexpr (std::is_same_v<Model, JohnsonCook>) {
         const double vm_trial = trial.von_mises();
-        // The rate entering the yield stress: the total equivalent deviatoric strain rate.
-        const core::SymTensor3 e = strain_rate.deviator();
-        const double rate = std::sqrt(2.0 / 3.0 * e.contract(e));
+        const double rate = equivalent_strain_rate(strain_rate);
         const double sigma_y0 = model.strength.yield_stress(s.plastic_strain, rate, s.temperature);
         if (vm_trial > sigma_y0) {
             // Radial return with hardening: solve vm_trial - 3 G d_eps = sigma_y(eps_p + d_eps) for d_eps
@@ -153,8 +157,7 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
         // strength; the stress is returned onto the lowered surface, and the deviatoric elastic energy it
         // loses, U = sigma_y^2 / 6G (Johnson & Holmquist 1994), feeds the bulking pressure.
         const double vm_trial = trial.von_mises();
-        const core::SymTensor3 e = strain_rate.deviator();
-        const double rate = std::sqrt(2.0 / 3.0 * e.contract(e));
+        const double rate = equivalent_strain_rate(strain_rate);
         const double sigma_y0 = model.strength.yield_stress(pressure, s.damage, rate);
         if (vm_trial > sigma_y0) {
             const double three_g = 3.0 * props.shear_modulus;

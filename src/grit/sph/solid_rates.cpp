@@ -41,32 +41,40 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     // clear of these arrays each step was 8 % of a solid step at 77k particles.
     work.strain_rate.resize(static_cast<std::size_t>(n));
     work.spin.resize(static_cast<std::size_t>(n));
-    work.artificial_stress.resize(static_cast<std::size_t>(n));
     work.energy_rate.resize(static_cast<std::size_t>(n));
     SymTensor3* strain_rate = work.strain_rate.data();
     material::Spin* spin = work.spin.data();
-    SymTensor3* art = work.artificial_stress.data();
     double* de = work.energy_rate.data();
 
-    // Per solid particle: sigma / rho^2 with sigma = -p I + tau (read by every pair), and the
-    // artificial stress from sigma.
+    // Packed per solid particle for the pair pass, so a neighbour costs 7 doubles (2D), not 18:
+    // M = (sigma / rho^2) L (Dim x Dim, row-major; written by the correction pass) and the in-plane
+    // artificial stress R (xx, yy, xy[, zz, yz, zx]; written here).
+    constexpr int mm_size = Dim * Dim, r_size = Dim * (Dim + 1) / 2;
+    work.stress_correction.resize(static_cast<std::size_t>(n) * mm_size);
+    work.plane_artificial_stress.resize(static_cast<std::size_t>(n) * r_size);
+    double* packed_m = work.stress_correction.data();
+    double* packed_r = work.plane_artificial_stress.data();
     const double eps_as = prm.artificial_stress;
-    work.stress_term.resize(static_cast<std::size_t>(n));
     // Whether a particle's R is non-zero (tension): pairs of two compressed particles skip the term.
     // Read for every neighbour, so written for every particle (0 for fluid and walls).
     work.has_artificial_stress.resize(static_cast<std::size_t>(n));
     std::uint8_t* has_art = work.has_artificial_stress.data();
-    SymTensor3* stress_term = work.stress_term.data();
     parallel::for_each(n, [&](Index i) {
         has_art[i] = 0;
         if (phase[i] != solid) return;
-        const SymTensor3 sigma = tau[i] - SymTensor3::identity() * p[i];
-        stress_term[i] = sigma * (1.0 / (rho[i] * rho[i]));
-        art[i] = SymTensor3::zero();
-        if (eps_as > 0.0) {
-            art[i] = artificial_stress(sigma, rho[i], eps_as, Dim == 2);
-            has_art[i] = art[i].xx != 0.0 || art[i].yy != 0.0 || art[i].zz != 0.0 || art[i].xy != 0.0 ||
-                         art[i].yz != 0.0 || art[i].zx != 0.0;
+        const SymTensor3 art = eps_as > 0.0 ? artificial_stress(tau[i] - SymTensor3::identity() * p[i], rho[i],
+                                                                 eps_as, Dim == 2)
+                                            : SymTensor3::zero();
+        has_art[i] = art.xx != 0.0 || art.yy != 0.0 || art.zz != 0.0 || art.xy != 0.0 || art.yz != 0.0 ||
+                     art.zx != 0.0;
+        double* r = packed_r + static_cast<std::size_t>(i) * r_size;
+        r[0] = art.xx;
+        r[1] = art.yy;
+        r[2] = art.xy;
+        if constexpr (Dim == 3) {
+            r[3] = art.zz;
+            r[4] = art.yz;
+            r[5] = art.zx;
         }
     });
     // Kernel gradient correction (Randles & Libersky 1996; second seed paper eq. 8), per solid particle:
@@ -102,47 +110,30 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             for (int i = 0; i < Dim; ++i)
                 for (int j = 0; j < Dim; ++j) mm[i][j] -= volume[b] * f * xab[i] * xab[j];
         }
-        corr[a] = SymTensor3::identity();  // where the moment matrix is singular (an isolated particle)
+        SymTensor3 l = SymTensor3::identity();  // where the moment matrix is singular (an isolated particle)
         if constexpr (Dim == 2) {
             const double det = mm[0][0] * mm[1][1] - mm[0][1] * mm[1][0];
-            if (std::abs(det) > 1e-6) corr[a] = {mm[1][1] / det, mm[0][0] / det, 1.0, -mm[0][1] / det, 0.0, 0.0};
+            if (std::abs(det) > 1e-6) l = {mm[1][1] / det, mm[0][0] / det, 1.0, -mm[0][1] / det, 0.0, 0.0};
         } else {
             Eigen::Matrix3d m3;
             m3 << mm[0][0], mm[0][1], mm[0][2], mm[1][0], mm[1][1], mm[1][2], mm[2][0], mm[2][1], mm[2][2];
             if (std::abs(m3.determinant()) > 1e-6) {
                 const Eigen::Matrix3d inv = m3.inverse();
-                corr[a] = {inv(0, 0), inv(1, 1), inv(2, 2), inv(0, 1), inv(1, 2), inv(2, 0)};
+                l = {inv(0, 0), inv(1, 1), inv(2, 2), inv(0, 1), inv(1, 2), inv(2, 0)};
             }
         }
-    });
-    // M = (sigma / rho^2) L and the in-plane R, packed per particle for the pair pass.
-    constexpr int mm_size = Dim * Dim, r_size = Dim * (Dim + 1) / 2;
-    work.stress_correction.resize(static_cast<std::size_t>(n) * mm_size);
-    work.plane_artificial_stress.resize(static_cast<std::size_t>(n) * r_size);
-    double* packed_m = work.stress_correction.data();
-    double* packed_r = work.plane_artificial_stress.data();
-    parallel::for_each(n, [&](Index a) {
-        if (phase[a] != solid) return;  // read for solid neighbours only
-        double* out = packed_m + static_cast<std::size_t>(a) * mm_size;
-        double* r = packed_r + static_cast<std::size_t>(a) * r_size;
-        const SymTensor3& st = stress_term[a];
-        const SymTensor3& l = corr[a];
+        corr[a] = l;
+        // M = (sigma_a / rho_a^2) L_a, sigma = -p I + tau.
+        const SymTensor3 st = (tau[a] - SymTensor3::identity() * p[a]) * (1.0 / (rho[a] * rho[a]));
         const double sm[3][3] = {{st.xx, st.xy, st.zx}, {st.xy, st.yy, st.yz}, {st.zx, st.yz, st.zz}};
         const double lm[3][3] = {{l.xx, l.xy, l.zx}, {l.xy, l.yy, l.yz}, {l.zx, l.yz, l.zz}};
+        double* out = packed_m + static_cast<std::size_t>(a) * mm_size;
         for (int i = 0; i < Dim; ++i)
             for (int j = 0; j < Dim; ++j) {
                 double sum = 0.0;
                 for (int k = 0; k < Dim; ++k) sum += sm[i][k] * lm[k][j];
                 out[i * Dim + j] = sum;
             }
-        r[0] = art[a].xx;
-        r[1] = art[a].yy;
-        r[2] = art[a].xy;
-        if constexpr (Dim == 3) {
-            r[3] = art[a].zz;
-            r[4] = art[a].yz;
-            r[5] = art[a].zx;
-        }
     });
     // M . g and (R_a + R_b) . g over the packed layouts.
     auto m_dot = [](const double* mm, const Vec& grad) {

@@ -19,16 +19,14 @@ namespace grit::sph {
 struct SolidWorkspace {
     std::vector<core::SymTensor3> strain_rate;        ///< eq. (31) [1/s]
     std::vector<material::Spin> spin;                 ///< eq. (31) [1/s]
-    std::vector<core::SymTensor3> artificial_stress;  ///< R of Gray et al. (2001) [m^5/(kg s^2)]
     std::vector<double> energy_rate;                  ///< de/dt [W/kg]
     std::vector<core::SymTensor3> correction;         ///< kernel gradient correction L (symmetric)
-    std::vector<core::SymTensor3> stress_term;        ///< sigma / rho^2 [m^5/(kg s^2)]
     /// Per neighbour-list entry of a solid particle, from the correction pass for the main pass: the
     /// kernel's gradient factor (dW/dr)/r and the artificial stress weight (W(r)/W(dx))^n.
     std::vector<double> pair_gradient, pair_stress_weight;
     std::vector<std::uint8_t> has_artificial_stress;  ///< R != 0 (a principal stress in tension)
     /// Per solid particle, compact for the pair pass: M = (sigma / rho^2) L (Dim x Dim, row-major) and
-    /// the in-plane R (xx, yy, xy[, zz, yz, zx]); a neighbour then costs 7 doubles (2D), not 18.
+    /// the in-plane artificial stress R of Gray et al. (2001) (xx, yy, xy[, zz, yz, zx]).
     std::vector<double> stress_correction, plane_artificial_stress;
 };
 
