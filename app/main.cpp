@@ -20,7 +20,7 @@ constexpr int exit_input_error = 2;
 constexpr int exit_blow_up = 3;
 
 int run_command(const std::string& case_file, const std::vector<std::string>& sets, const std::string& out,
-                double end_time, bool has_end_time, int threads, bool quiet) {
+                double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart) {
     std::vector<std::string> overrides = sets;
     if (has_end_time) overrides.push_back(fmt::format("time.end={:.17g}", end_time));
     const grit::io::CaseSpec spec = grit::io::read_case(case_file, overrides);
@@ -28,6 +28,16 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     grit::sim::RunOptions options;
     options.output_dir = out.empty() ? std::filesystem::path("output") / spec.name : std::filesystem::path(out);
     options.quiet = quiet;
+    if (!restart.empty()) {
+        // A restart continues the files of the run the checkpoint belongs to (its folder holds checkpoints/).
+        options.restart = restart;
+        const auto checkpoint = grit::sim::resolve_checkpoint(restart);
+        const auto folder = checkpoint.parent_path().parent_path();
+        if (!out.empty() && !std::filesystem::equivalent(std::filesystem::path(out), folder))
+            throw grit::core::InputError(fmt::format("--out {}: a restart continues the run in {}; leave --out out",
+                                                     out, folder.string()));
+        options.output_dir = folder;
+    }
     const auto summary = grit::sim::run_case(spec, options);
     if (!quiet)
         fmt::print("{}: {} steps to t = {:.6g} s, {} particles, {:.3g} s wall, {:.3g} particle-steps/s -> {}\n",
@@ -47,6 +57,7 @@ int main(int argc, char** argv) {
     double end_time = 0.0;
     int threads = 0;
     bool quiet = false;
+    std::string restart;
 
     auto* run = app.add_subcommand("run", "run a case");
     run->add_option("case", case_file, "case file (TOML)")->required();
@@ -55,6 +66,8 @@ int main(int argc, char** argv) {
     auto* end_opt = run->add_option("--end-time", end_time, "simulated end time [s] (0 writes the initial state)");
     run->add_option("--threads", threads, "number of threads")->check(CLI::PositiveNumber);
     run->add_flag("--quiet", quiet, "no progress line or final message");
+    run->add_option("--restart", restart,
+                    "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file");
 
     auto* check = app.add_subcommand("check", "validate a case file without running it");
     check->add_option("case", case_file, "case file (TOML)")->required();
@@ -68,7 +81,7 @@ int main(int argc, char** argv) {
         if (run->parsed()) {
             if (end_opt->count() && end_time < 0.0)
                 throw grit::core::InputError(fmt::format("--end-time {}: must not be negative [s]", end_time));
-            return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet);
+            return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart);
         }
         if (check->parsed()) {
             const auto spec = grit::io::read_case(case_file, sets);
@@ -91,6 +104,9 @@ int main(int argc, char** argv) {
     } catch (const grit::core::InputError& e) {
         fmt::print(stderr, "grit: error: {}\n", e.what());
         return exit_input_error;
+    } catch (const grit::sim::Interrupted& e) {
+        fmt::print(stderr, "grit: {}\n", e.what());
+        return 128 + e.signal();  // 130 for Ctrl-C (SIGINT), 143 for SIGTERM
     } catch (const grit::core::BlowUpError& e) {
         fmt::print(stderr, "grit: {}\n", e.what());
         return exit_blow_up;

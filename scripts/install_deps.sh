@@ -7,7 +7,8 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
-  python3 python3-numpy python3-matplotlib python3-vtk9
+  libhdf5-dev hdf5-tools
+  python3 python3-numpy python3-matplotlib python3-vtk9 python3-h5py
 )
 
 missing=()

@@ -328,6 +328,141 @@ else
     fail "blow-up: one snapshots/*last_good*.vtu written" "found ${#last_good[@]}"
 fi
 
+# --- checkpoints and restart: killed (SIGKILL) or interrupted (SIGINT) runs continue bit for bit -------
+
+DEMO=$ROOT/cases/demo.toml
+DEMO_SET=(--set time.end=1.2e-5 --set output.checkpoint_interval=1e-6 --threads 2 --quiet)
+# Files that must be identical to the straight run's.
+same_outputs() {
+    local a=$1 b=$2 f rel
+    while IFS= read -r f; do
+        rel=${f#"$a"/}
+        cmp -s -- "$f" "$b/$rel" || { echo "$rel differs"; return 1; }
+    done < <(find "$a" -type f \( -name '*.csv' -o -name '*.pvd' -o -name '*.vtu' \) ! -name '*interrupted*')
+    return 0
+}
+# Starts grit in the background and waits for its first checkpoint; sets BG_PID.
+start_and_wait_for_checkpoint() {
+    local dir=$1
+    shift
+    "$GRIT" run "$DEMO" --out "$dir" "${DEMO_SET[@]}" "$@" >"$W/bg_out" 2>"$W/bg_err" &
+    BG_PID=$!
+    local k
+    for k in $(seq 1 600); do
+        compgen -G "$dir/checkpoints/checkpoint_*.h5" >/dev/null && return 0
+        sleep 0.05
+    done
+    return 1
+}
+
+STRAIGHT=$W/straight
+grit run "$DEMO" --out "$STRAIGHT" "${DEMO_SET[@]}"
+ckpts=("$STRAIGHT"/checkpoints/checkpoint_*.h5)
+if [[ $RC -eq 0 && ${#ckpts[@]} -eq 2 ]]; then
+    pass "demo with output.checkpoint_interval: exit 0, the latest 2 checkpoints kept"
+else
+    fail "demo with output.checkpoint_interval: exit 0, the latest 2 checkpoints kept" "exit $RC, ${#ckpts[@]} checkpoints"
+fi
+if [[ $(head -n 1 "$STRAIGHT/crater.csv") == "x,surface,time" ]]; then
+    pass "crater.csv starts with its header row"
+else
+    fail "crater.csv starts with its header row" "first line: $(head -n 1 "$STRAIGHT/crater.csv")"
+fi
+if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j["restarted_from"] is None else 1)' "$STRAIGHT/summary.json"; then
+    pass "summary.json: restarted_from is null for a fresh run"
+else
+    fail "summary.json: restarted_from is null for a fresh run"
+fi
+if command -v h5dump >/dev/null 2>&1; then
+    if h5dump -A "${ckpts[-1]}" 2>/dev/null | grep -q 'case_text'; then
+        pass "checkpoint is readable by h5dump (case_text attribute)"
+    else
+        fail "checkpoint is readable by h5dump (case_text attribute)"
+    fi
+else
+    skip "checkpoint is readable by h5dump" "no h5dump"
+fi
+
+KILLED=$W/killed
+if start_and_wait_for_checkpoint "$KILLED"; then
+    kill -KILL "$BG_PID" 2>/dev/null || true
+    wait "$BG_PID" 2>/dev/null || true
+    grit run "$DEMO" --restart "$KILLED" "${DEMO_SET[@]}"
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$KILLED"); then
+        pass "SIGKILL mid-run, --restart DIR: series, impacts, crater, pvd and snapshots identical to the straight run"
+    else
+        fail "SIGKILL mid-run, --restart DIR: outputs identical to the straight run" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+    if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if "checkpoint_" in (j["restarted_from"] or "") else 1)' "$KILLED/summary.json"; then
+        pass "summary.json of a restarted run names its checkpoint (restarted_from)"
+    else
+        fail "summary.json of a restarted run names its checkpoint (restarted_from)"
+    fi
+else
+    fail "SIGKILL mid-run: a checkpoint appeared" "none within 30 s"
+fi
+
+INTERRUPTED=$W/interrupted
+if start_and_wait_for_checkpoint "$INTERRUPTED"; then
+    kill -INT "$BG_PID" 2>/dev/null || true
+    bg_rc=0
+    wait "$BG_PID" || bg_rc=$?
+    status=""
+    [[ -n $JSON_PY ]] && status=$("$JSON_PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$INTERRUPTED/summary.json" 2>/dev/null)
+    if [[ $bg_rc -eq 130 && $status == interrupted ]]; then
+        pass "SIGINT: exit 130, summary.json status 'interrupted'"
+    elif [[ $bg_rc -eq 0 ]]; then
+        skip "SIGINT: exit 130" "the run finished before the signal arrived"
+    else
+        fail "SIGINT: exit 130, summary.json status 'interrupted'" "exit $bg_rc, status '$status'; $(cat "$W/bg_err")"
+    fi
+    latest=$(ls "$INTERRUPTED"/checkpoints/checkpoint_*.h5 | tail -n 1)
+    grit run "$DEMO" --restart "$latest" "${DEMO_SET[@]}"
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$INTERRUPTED"); then
+        pass "SIGINT, --restart FILE: outputs identical to the straight run"
+    else
+        fail "SIGINT, --restart FILE: outputs identical to the straight run" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+else
+    fail "SIGINT mid-run: a checkpoint appeared" "none within 30 s"
+fi
+
+# A finished run extended with --set time.end: rows continue, none repeated.
+grit run "$DEMO" --restart "$STRAIGHT" "${DEMO_SET[@]}" --set time.end=1.4e-5
+if [[ $RC -eq 0 ]] && "${JSON_PY:-python3}" - "$STRAIGHT/series.csv" <<'PYEOF'
+import sys
+rows = [l.split(",") for l in open(sys.argv[1]).read().splitlines()[1:]]
+t = [float(r[0]) for r in rows]
+sys.exit(0 if all(b > a for a, b in zip(t, t[1:])) and abs(t[-1] - 1.4e-5) < 1e-12 else 1)
+PYEOF
+then
+    pass "--restart a finished run with --set time.end=1.4e-5: series continues to 1.4e-5 without repeated rows"
+else
+    fail "--restart a finished run with --set time.end: series continues without repeated rows" "exit $RC; $(cat "$W/stderr")"
+fi
+
+# Checkpoints that do not fit: exit 2, one line.
+expect_restart_error() {
+    local name=$1 pattern=$2
+    shift 2
+    grit run "$@" --quiet
+    local lines
+    lines=$(grep -c '' "$W/stderr" || true)
+    if [[ $RC -eq 2 && $lines -eq 1 ]] && grep -qF -- "$pattern" "$W/stderr"; then
+        pass "restart refused: $name -> exit 2: $(cat "$W/stderr")"
+    else
+        fail "restart refused: $name" "exit $RC, $lines line(s): $(cat "$W/stderr")"
+    fi
+}
+ckpts=("$STRAIGHT"/checkpoints/checkpoint_*.h5)  # the extension above wrote newer ones
+expect_restart_error "no such folder" "no such checkpoint" "$DEMO" --restart "$W/nowhere"
+expect_restart_error "another case's checkpoint" "written by case 'demo'" "$HYDRO" --restart "${ckpts[-1]}"
+expect_restart_error "another particle spacing" "numerics.particle_spacing" "$DEMO" --restart "$STRAIGHT" \
+    --set numerics.particle_spacing=2e-4
+cp -- "${ckpts[-1]}" "$W/truncated.h5"
+truncate -s 2000 "$W/truncated.h5"
+expect_restart_error "a truncated checkpoint" "truncated.h5" "$DEMO" --restart "$W/truncated.h5"
+
 # --- summary --------------------------------------------------------------------------------------------
 
 echo "$passed passed, $failed failed"

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/analysis/diagnostics.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/sim/simulation.hpp"
 

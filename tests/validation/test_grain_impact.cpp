@@ -42,7 +42,7 @@ TEST(GrainImpact, MomentumOfGrainAndPlateIsConserved) {
         worst = std::max(worst, std::abs(p[1] - p0y) / std::abs(p0y));
         EXPECT_LT(std::abs(p[0]), 1e-6 * std::abs(p0y)) << "t = " << sim.time();
     }
-    const double rebound = sim.grains()->system().grains().velocity()[0][1];
+    const double rebound = sim.grains()->grains().velocity()[0][1];
     std::printf("momentum drift <= %.3g %%, grain rebound %.2f m/s, eroded %.3g kg/m\n", 100.0 * worst, rebound,
                 sim.eroded_mass());
     EXPECT_LT(worst, 0.01);  // issue 5: within 1 %
@@ -61,7 +61,7 @@ TEST(GrainImpact, DropTestCaseReboundsByRestitutionSquared) {
             load_case("dem_bounce_2d/case.toml", {"grain_materials.drop_grain.restitution=" + std::to_string(e)}),
             in_memory());
         sim.advance_to(0.75);
-        const auto& log = sim.grains()->impacts();
+        const auto& log = sim.impacts().records();
         ASSERT_GE(log.size(), 4u) << "e = " << e;
         // First impact: free fall through 45 mm, v = sqrt(2 g h).
         EXPECT_NEAR(log[0].speed, std::sqrt(2.0 * 9.81 * 0.045), 1e-3 * log[0].speed);
@@ -113,7 +113,7 @@ max = [6.0e-3, 6.0e-3]
     // The wall's top particles sit at y = -dx/2; the grain's surface may reach d_ini above them.
     // Dropped from rest 0.5 mm above the wall: it reaches about sqrt(2 g 0.5 mm) = 0.1 m/s.
     double lowest = 1.0, upward = -1.0, highest_after = -1.0;
-    const auto& grains = sim.grains()->system().grains();
+    const auto& grains = sim.grains()->grains();
     sim.advance_to(0.02, [&] {
         const double y = grains.position()[0][1], vy = grains.velocity()[0][1];
         lowest = std::min(lowest, y - 1.0e-3);
@@ -125,8 +125,8 @@ max = [6.0e-3, 6.0e-3]
     EXPECT_GT(upward, 0.02) << "the grain did not bounce";
     // The penalty contact creates no energy: the grain does not rise above its start.
     EXPECT_LT(highest_after, 1.5e-3 + 1e-6);
-    ASSERT_FALSE(sim.grains()->impacts().empty());
-    EXPECT_EQ(sim.grains()->impacts().front().target, "wall");
+    ASSERT_FALSE(sim.impacts().records().empty());
+    EXPECT_EQ(sim.impacts().records().front().target, "wall");
 }
 
 }  // namespace

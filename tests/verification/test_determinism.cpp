@@ -32,7 +32,7 @@ RunState<Dim> run(const grit::io::CaseSpec& spec, int threads, int steps) {
     for (int k = 0; k < steps; ++k) sim.step();
     RunState<Dim> out{sim.particles(), {}, {}};
     if (auto* g = sim.grains()) {
-        const auto& grains = g->system().grains();
+        const auto& grains = g->grains();
         out.grain_position.assign(grains.position(), grains.position() + grains.size());
         out.grain_velocity.assign(grains.velocity(), grains.velocity() + grains.size());
     }

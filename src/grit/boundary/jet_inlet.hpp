@@ -21,6 +21,10 @@ public:
     /// Emits the layers due during (t, t + dt]; returns the mass emitted [kg] (per metre in 2D).
     double emit(particles::SphParticles<Dim>& particles, double t, double dt);
 
+    /// Distance the last emitted layer has moved [m]: the inlet's whole state, for checkpoints.
+    double travelled() const noexcept { return travelled_; }
+    void set_travelled(double d) noexcept { travelled_ = d; }
+
     /// Offsets of one layer's particles within the inlet section (perpendicular to the jet).
     const std::vector<Vec>& layer() const { return layer_; }
 

@@ -16,6 +16,7 @@
 #include "grit/core/vec.hpp"
 #include "grit/dem/grain_neighbors.hpp"
 #include "grit/dem/grain_loop.hpp"
+#include "grit/io/hdf5_file.hpp"
 
 namespace grit::dem {
 
@@ -69,6 +70,35 @@ public:
                     }
             }
         });
+    }
+
+    /// Writes everything (the values beside the current lists and the values saved by id) into
+    /// `group`, bit for bit, for a checkpoint.
+    void write(io::Hdf5Group& group) const {
+        group.write("values", reinterpret_cast<const double*>(values_.data()), values_.size(), Dim);
+        std::vector<std::int64_t> rows;
+        for (const auto& r : saved_rows_) rows.insert(rows.end(), {r.owner, r.first, r.last});
+        group.write("saved_rows", rows.data(), saved_rows_.size(), 3);
+        group.write("saved_partner", saved_partner_.data(), saved_partner_.size(), 1);
+        group.write("saved_value", reinterpret_cast<const double*>(saved_value_.data()), saved_value_.size(), Dim);
+    }
+    /// Reads back what write() wrote.
+    void read(const io::Hdf5Group& group) {
+        std::size_t n = 0;
+        auto to_vecs = [](const std::vector<double>& raw) {
+            std::vector<Vec> out(raw.size() / Dim);
+            for (std::size_t i = 0; i < out.size(); ++i)
+                for (int k = 0; k < Dim; ++k) out[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
+            return out;
+        };
+        values_ = to_vecs(group.read_doubles("values", Dim, n));
+        const auto rows = group.read_int64("saved_rows", 3, n);
+        saved_rows_.clear();
+        for (std::size_t r = 0; r < n; ++r)
+            saved_rows_.push_back({static_cast<std::int32_t>(rows[3 * r]), static_cast<Index>(rows[3 * r + 1]),
+                                   static_cast<Index>(rows[3 * r + 2])});
+        saved_partner_ = group.read_int32("saved_partner", 1, n);
+        saved_value_ = to_vecs(group.read_doubles("saved_value", Dim, n));
     }
 
     /// Number of pairs with a non-zero history.

@@ -204,6 +204,63 @@ double DemSystem<Dim>::kinetic_energy() const {
     });
 }
 
+template <int Dim>
+typename DemSystem<Dim>::Vec DemSystem<Dim>::momentum() const {
+    const Vec* v = grains_.velocity();
+    const double* m = grains_.mass();
+    Vec p = Vec::zero();
+    for (int k = 0; k < Dim; ++k) p[k] = parallel::sum(grains_.size(), 0.0, [&](Index i) { return m[i] * v[i][k]; });
+    return p;
+}
+
+template <int Dim>
+void DemSystem<Dim>::save(io::Hdf5Group& group) const {
+    auto set = group.create_group("grains");
+    grains_.save(set);
+    group.write("time", time_);
+    group.write("skin", skin_);
+    group.write("forces_ready", std::int64_t{forces_ready_});
+    group.write("lists_dirty", std::int64_t{lists_dirty_});
+    group.write("history_saved", std::int64_t{history_saved_});
+    group.write("steps", counters_.steps);
+    group.write("rebuilds", counters_.rebuilds);
+    auto history = group.create_group("contact_history");
+    history_.write(history);
+    // The lists are valid for the current grains unless dirty: they are rebuilt on load from the
+    // positions they were built at (sorted and wrapped then), which gives the same rows and order.
+    if (!lists_dirty_)
+        group.write("list_reference_positions", reinterpret_cast<const double*>(list_.reference_positions()),
+                    static_cast<std::size_t>(list_.grain_count()), Dim);
+}
+
+template <int Dim>
+void DemSystem<Dim>::load(const io::Hdf5Group& group) {
+    grains_.load(group.open_group("grains"));
+    time_ = group.read_double("time");
+    skin_ = group.read_double("skin");
+    forces_ready_ = group.read_int("forces_ready") != 0;
+    lists_dirty_ = group.read_int("lists_dirty") != 0;
+    history_saved_ = group.read_int("history_saved") != 0;
+    counters_.steps = group.read_int("steps");
+    counters_.rebuilds = group.read_int("rebuilds");
+    history_.read(group.open_group("contact_history"));
+    list_ = GrainNeighborList<Dim>();
+    if (lists_dirty_) return;
+    std::size_t rows = 0;
+    const auto raw = group.read_doubles("list_reference_positions", Dim, rows);
+    const Index n = grains_.size();
+    if (rows != static_cast<std::size_t>(n))
+        throw io::Hdf5Error(group.path() + "/list_reference_positions: one row per grain expected");
+    std::vector<Vec> reference(rows);
+    for (std::size_t i = 0; i < rows; ++i)
+        for (int k = 0; k < Dim; ++k) reference[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
+    const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains_.radius()[i]; });
+    const GrainGrid<Dim> grid = GrainNeighborList<Dim>::make_grid(parameters_.domain, reference.data(), n,
+                                                                   2.0 * rmax + skin_);
+    list_.build(grid, parameters_.domain, reference.data(), std::as_const(grains_).radius(), grains_.id(), n, skin_);
+    scratch_.reset(list_.entry_count());
+}
+
 template class DemSystem<2>;
 template class DemSystem<3>;
 

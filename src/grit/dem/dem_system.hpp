@@ -87,6 +87,15 @@ public:
 
     /// Total kinetic energy (translation + rotation) [J] (per metre of thickness in 2D).
     double kinetic_energy() const;
+    /// Total linear momentum [kg m/s] (per metre of thickness in 2D).
+    Vec momentum() const;
+
+    /// Writes the grains, the contact history, the lists' reference positions and the step state into
+    /// `group`, so that load() continues bit for bit (a checkpoint).
+    void save(io::Hdf5Group& group) const;
+    /// Reads back what save() wrote, into a system built from the same case (same materials and
+    /// walls): grains, history and step state; the lists are rebuilt exactly as they were.
+    void load(const io::Hdf5Group& group);
 
 private:
     void update_neighbors();

@@ -80,6 +80,17 @@ public:
     /// Reorders and/or removes grains: new[i] = old[source[i]].
     void gather(const std::vector<Index>& source) { fields_.gather(source); }
 
+    /// Every saved field and the id counter into `group` (a checkpoint's grain set).
+    void save(io::Hdf5Group& group) const {
+        fields_.save(group);
+        group.write("next_id", static_cast<std::int64_t>(next_id_));
+    }
+    /// Reads back what save() wrote; the set must have the same fields registered.
+    void load(const io::Hdf5Group& group) {
+        fields_.load(group);
+        next_id_ = static_cast<std::int32_t>(group.read_int("next_id"));
+    }
+
     const std::int32_t* id() const noexcept { return id_->data(); }
     Vec* position() noexcept { return position_->data(); }
     Vec* velocity() noexcept { return velocity_->data(); }

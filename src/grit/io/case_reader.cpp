@@ -593,6 +593,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     const Section output = top.section("output");
     c.output_interval = output.number("interval", positive("[s]"));
     c.write_snapshots = output.flag_or("snapshots", true);
+    c.checkpoint_interval = output.number_or("checkpoint_interval", 0.0, non_negative("[s]"));
+    c.checkpoint_keep = output.integer_or("checkpoint_keep", c.checkpoint_keep, 1, 1000000);
 
     const Section numerics = top.section("numerics");
     const bool sph_blocks = top.has("fluid") || top.has("solid") || top.has("inlet") || top.has("wall");

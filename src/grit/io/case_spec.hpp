@@ -115,6 +115,9 @@ struct CaseSpec {
 
     double output_interval = 0.0;  ///< output.interval [s]
     bool write_snapshots = true;   ///< output.snapshots
+    /// output.checkpoint_interval [s]: checkpoints during the run (0: only at the end and on SIGINT/SIGTERM)
+    double checkpoint_interval = 0.0;
+    int checkpoint_keep = 2;       ///< output.checkpoint_keep: the latest checkpoints kept in checkpoints/
 
     double particle_spacing = 0.0;       ///< numerics.particle_spacing [m]
     double smoothing_ratio = 1.25;       ///< numerics.smoothing_ratio h/dx (paper: 1.25)

@@ -69,4 +69,30 @@ void PvdWriter::rewrite() const {
     });
 }
 
+void save_pvd_entries(Hdf5Group& group, const std::string& prefix, const std::vector<PvdWriter::Entry>& entries) {
+    std::vector<double> times;
+    std::string files;
+    for (const auto& e : entries) {
+        times.push_back(e.time);
+        files += e.relative_path + "\n";  // paths hold no line break (grit names them)
+    }
+    group.write(prefix + "_times", times.data(), times.size(), 1);
+    group.write(prefix + "_files", files);
+}
+
+std::vector<PvdWriter::Entry> load_pvd_entries(const Hdf5Group& group, const std::string& prefix) {
+    std::size_t rows = 0;
+    const auto times = group.read_doubles(prefix + "_times", 1, rows);
+    const std::string files = group.read_string(prefix + "_files");
+    std::vector<PvdWriter::Entry> entries;
+    std::size_t start = 0;
+    for (std::size_t k = 0; k < rows; ++k) {
+        const std::size_t end = files.find('\n', start);
+        if (end == std::string::npos) throw Hdf5Error(group.path() + "/" + prefix + "_files: fewer paths than times");
+        entries.push_back({times[k], files.substr(start, end - start)});
+        start = end + 1;
+    }
+    return entries;
+}
+
 }  // namespace grit::io

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "grit/io/hdf5_file.hpp"
+
 namespace grit::io {
 
 /// A ParaView collection (.pvd, VTKFile type="Collection") of time-stamped datasets.
@@ -27,6 +29,12 @@ public:
     /// std::runtime_error naming the path on I/O failure (the entry is then not kept).
     void add(double time, const std::string& relative_path);
 
+    /// Replaces the list with `entries` (a restart's, from its checkpoint) and rewrites the .pvd.
+    void restore(std::vector<Entry> entries) {
+        entries_ = std::move(entries);
+        rewrite();
+    }
+
     /// The datasets added so far, in order.
     const std::vector<Entry>& entries() const { return entries_; }
 
@@ -39,5 +47,9 @@ private:
     std::filesystem::path file_;
     std::vector<Entry> entries_;
 };
+
+/// A collection's entries into a checkpoint group (`<prefix>_times`, `<prefix>_files`), and back.
+void save_pvd_entries(Hdf5Group& group, const std::string& prefix, const std::vector<PvdWriter::Entry>& entries);
+std::vector<PvdWriter::Entry> load_pvd_entries(const Hdf5Group& group, const std::string& prefix);
 
 }  // namespace grit::io

@@ -1,6 +1,8 @@
 // CSV time-series writer: header line, then rows of {:.10g} values flushed one by one.
 #include "grit/io/series_writer.hpp"
 
+#include "grit/io/csv_file.hpp"
+
 #include <fmt/format.h>
 
 #include <iterator>
@@ -54,6 +56,23 @@ SeriesWriter::SeriesWriter(std::filesystem::path file, std::vector<std::string> 
     }
 }
 
+SeriesWriter::SeriesWriter(std::filesystem::path file, std::vector<std::string> columns, long rows)
+    : file_(std::move(file)), columns_(std::move(columns)), rows_(rows) {
+    keep_csv_rows(file_, rows);
+    std::string header;
+    {
+        std::ifstream in(file_);
+        std::getline(in, header);
+    }
+    std::string expected;
+    for (std::size_t i = 0; i < columns_.size(); ++i) expected += (i > 0 ? "," : "") + csv_field(columns_[i]);
+    if (header != expected)
+        throw std::runtime_error(fmt::format("'{}' has other columns than this run writes; cannot continue it",
+                                             file_.string()));
+    out_.open(file_, std::ios::out | std::ios::app);
+    if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", file_.string()));
+}
+
 void SeriesWriter::write_row(const std::vector<double>& values) {
     if (values.size() != columns_.size()) {
         throw std::logic_error(fmt::format("SeriesWriter '{}': row has {} values, expected {}",
@@ -69,6 +88,7 @@ void SeriesWriter::write_row(const std::vector<double>& values) {
     line.push_back('\n');
     out_.write(line.data(), static_cast<std::streamsize>(line.size()));
     out_.flush();
+    ++rows_;
     if (!out_) {
         throw std::runtime_error(fmt::format("error writing '{}'", file_.string()));
     }

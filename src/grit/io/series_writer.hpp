@@ -16,10 +16,16 @@ public:
     /// Creates (truncates) `file` and writes the header line. Throws std::invalid_argument
     /// for an empty column list and std::runtime_error naming the path on I/O failure.
     SeriesWriter(std::filesystem::path file, std::vector<std::string> columns);
+    /// Continues an existing series after a restart: keeps its header and first `rows` rows, checks
+    /// that the header lists `columns`, and appends.
+    SeriesWriter(std::filesystem::path file, std::vector<std::string> columns, long rows);
 
     /// Appends one row and flushes. Throws std::logic_error if `values.size()` differs from
     /// the number of columns, std::runtime_error naming the path on I/O failure.
     void write_row(const std::vector<double>& values);
+
+    /// Rows written so far (continued ones included).
+    long rows() const { return rows_; }
 
     /// The column names, in order.
     const std::vector<std::string>& columns() const { return columns_; }
@@ -31,6 +37,7 @@ private:
     std::filesystem::path file_;
     std::vector<std::string> columns_;
     std::ofstream out_;
+    long rows_ = 0;
 };
 
 }  // namespace grit::io

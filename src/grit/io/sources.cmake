@@ -3,4 +3,6 @@ set(GRIT_IO_SOURCES
   io/vtu_writer.cpp
   io/pvd_writer.cpp
   io/series_writer.cpp
+  io/csv_file.cpp
+  io/hdf5_file.cpp
 )

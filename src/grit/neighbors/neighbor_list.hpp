@@ -29,6 +29,9 @@ public:
     Index particle_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
     std::size_t pair_count() const noexcept { return indices_.size(); }
 
+    /// The positions the lists were built at (one per particle).
+    const Vec* reference_positions() const noexcept { return reference_positions_.data(); }
+
     /// Largest squared displacement of any particle since the last build.
     double max_displacement2(const Vec* x, Index n) const;
 

@@ -1,7 +1,9 @@
 // The registry of per-particle fields: named structure-of-arrays columns that are sorted, compacted,
-// grown, backed up and written together, so no model keeps private per-particle arrays.
+// grown, backed up, written to snapshots and saved to checkpoints together, so no model keeps private
+// per-particle arrays.
 #pragma once
 
+#include <cstring>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -13,6 +15,7 @@
 #include "grit/core/sym_tensor.hpp"
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
+#include "grit/io/hdf5_file.hpp"
 #include "grit/io/point_data.hpp"
 
 namespace grit::particles {
@@ -20,13 +23,16 @@ namespace grit::particles {
 /// Type-erased column; the registry moves particles through this interface only.
 class FieldBase {
 public:
-    explicit FieldBase(std::string name, bool output) : name_(std::move(name)), output_(output) {}
+    FieldBase(std::string name, bool output, bool saved) : name_(std::move(name)), output_(output), saved_(saved) {}
     virtual ~FieldBase() = default;
     FieldBase(const FieldBase&) = default;
     FieldBase& operator=(const FieldBase&) = default;
 
     const std::string& name() const { return name_; }
     bool is_output() const { return output_; }
+    /// Saved in checkpoints: every field a later step reads. Scratch recomputed before it is read
+    /// within the same step may opt out.
+    bool is_saved() const { return saved_; }
 
     virtual void resize(Index n) = 0;
     /// new[i] = old[source[i]]; reorders and removes in one pass.
@@ -34,16 +40,25 @@ public:
     virtual std::unique_ptr<FieldBase> clone() const = 0;
     /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
     virtual void append_output(io::PointCloud& cloud) const = 0;
+    /// Writes the column as a dataset named after the field (rows = particles, one column per scalar
+    /// component), bit for bit.
+    virtual void save(io::Hdf5Group& group) const = 0;
+    /// Reads the column back; the dataset must have `size` rows and this type's components.
+    virtual void load(const io::Hdf5Group& group, Index size) = 0;
+    /// The column's bytes (for bit-for-bit comparisons in tests).
+    virtual std::vector<unsigned char> bytes() const = 0;
 
 private:
     std::string name_;
     bool output_;
+    bool saved_;
 };
 
 template <class T>
 class Field final : public FieldBase {
 public:
-    Field(std::string name, T fill, bool output) : FieldBase(std::move(name), output), fill_(fill) {}
+    Field(std::string name, T fill, bool output, bool saved = true)
+        : FieldBase(std::move(name), output, saved), fill_(fill) {}
 
     T* data() noexcept { return values_.data(); }
     const T* data() const noexcept { return values_.data(); }
@@ -60,8 +75,20 @@ public:
     }
     std::unique_ptr<FieldBase> clone() const override { return std::make_unique<Field<T>>(*this); }
     void append_output(io::PointCloud& cloud) const override;
+    void save(io::Hdf5Group& group) const override;
+    void load(const io::Hdf5Group& group, Index size) override;
+    std::vector<unsigned char> bytes() const override {
+        const auto* p = reinterpret_cast<const unsigned char*>(values_.data());
+        return {p, p + values_.size() * sizeof(T)};
+    }
 
 private:
+    // Every field type is an array of int32 or of doubles (Vec, SymTensor3, Spin): its scalar type and
+    // the number of scalars per particle.
+    using Scalar = std::conditional_t<std::is_same_v<T, std::int32_t>, std::int32_t, double>;
+    static constexpr std::size_t components = sizeof(T) / sizeof(Scalar);
+    static_assert(sizeof(T) % sizeof(Scalar) == 0 && std::is_trivially_copyable_v<T>);
+
     std::vector<T> values_;
     T fill_;
 };
@@ -92,6 +119,24 @@ void Field<T>::append_output(io::PointCloud& cloud) const {
     cloud.arrays.push_back(std::move(a));
 }
 
+template <class T>
+void Field<T>::save(io::Hdf5Group& group) const {
+    group.write(name(), reinterpret_cast<const Scalar*>(values_.data()), values_.size(), components);
+}
+
+template <class T>
+void Field<T>::load(const io::Hdf5Group& group, Index size) {
+    std::size_t rows = 0;
+    std::vector<Scalar> raw;
+    if constexpr (std::is_same_v<Scalar, double>) raw = group.read_doubles(name(), components, rows);
+    else raw = group.read_int32(name(), components, rows);
+    if (rows != static_cast<std::size_t>(size))
+        throw io::Hdf5Error(group.path() + "/" + name() + ": " + std::to_string(rows) + " rows, expected " +
+                            std::to_string(size));
+    values_.resize(rows);
+    std::memcpy(static_cast<void*>(values_.data()), raw.data(), raw.size() * sizeof(Scalar));
+}
+
 /// All fields of one particle set. Fields are created by the models that need them.
 class FieldRegistry {
 public:
@@ -113,14 +158,15 @@ public:
     FieldRegistry& operator=(FieldRegistry&&) = default;
 
     /// Adds a field (or returns the existing one of the same name and type).
+    /// `output`: written to snapshots; `saved`: written to checkpoints (see FieldBase::is_saved).
     template <class T>
-    Field<T>& add(const std::string& name, T fill, bool output) {
+    Field<T>& add(const std::string& name, T fill, bool output, bool saved = true) {
         if (auto it = index_.find(name); it != index_.end()) {
             auto* f = dynamic_cast<Field<T>*>(fields_[it->second].get());
             if (!f) throw std::logic_error("field '" + name + "' already registered with another type");
             return *f;
         }
-        auto field = std::make_unique<Field<T>>(name, fill, output);
+        auto field = std::make_unique<Field<T>>(name, fill, output, saved);
         field->resize(size_);
         auto& ref = *field;
         index_[name] = fields_.size();
@@ -143,6 +189,12 @@ public:
     }
 
     bool has(const std::string& name) const { return index_.count(name) != 0; }
+    /// Every field, in registration order.
+    std::vector<const FieldBase*> all() const {
+        std::vector<const FieldBase*> out;
+        for (const auto& f : fields_) out.push_back(f.get());
+        return out;
+    }
     Index size() const noexcept { return size_; }
 
     void resize(Index n) {
@@ -156,6 +208,20 @@ public:
     void append_output(io::PointCloud& cloud) const {
         for (const auto& f : fields_)
             if (f->is_output()) f->append_output(cloud);
+    }
+    /// Every saved field as a dataset of `group`, and the particle count as its attribute `size`.
+    void save(io::Hdf5Group& group) const {
+        group.write("size", static_cast<std::int64_t>(size_));
+        for (const auto& f : fields_)
+            if (f->is_saved()) f->save(group);
+    }
+    /// Reads every saved field back (each must be in `group`); unsaved fields take their fill value.
+    void load(const io::Hdf5Group& group) {
+        const auto n = static_cast<Index>(group.read_int("size"));
+        resize(0);
+        resize(n);
+        for (auto& f : fields_)
+            if (f->is_saved()) f->load(group, n);
     }
 
 private:

@@ -2,6 +2,9 @@
 // the same neighbour loops (fluid-solid interaction is SPH interaction, first seed paper section 2).
 #pragma once
 
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,10 +33,13 @@ public:
           material_(&fields_.add<std::int32_t>("material", 0, true)),
           id_(&fields_.add<std::int32_t>("id", -1, true)) {}
 
-    SphParticles(const SphParticles& o) : fields_(o.fields_), next_id_(o.next_id_) { rebind(); }
+    SphParticles(const SphParticles& o) : fields_(o.fields_), next_id_(o.next_id_), generation_(o.generation_) {
+        rebind();
+    }
     SphParticles& operator=(const SphParticles& o) {
         fields_ = o.fields_;
         next_id_ = o.next_id_;
+        generation_ = o.generation_;
         rebind();
         return *this;
     }
@@ -46,12 +52,35 @@ public:
     /// returns the first new index.
     Index append(Index n) {
         const Index first = size();
+        if (next_id_ + n > std::numeric_limits<std::int32_t>::max())
+            throw std::overflow_error("particle ids exhausted: more than 2^31 particles created in one run");
         fields_.resize(first + n);
-        for (Index i = first; i < first + n; ++i) (*id_)[i] = next_id_++;
+        for (Index i = first; i < first + n; ++i) (*id_)[i] = static_cast<std::int32_t>(next_id_++);
+        ++generation_;
         return first;
     }
     /// Reorders and/or removes particles: new[i] = old[source[i]].
-    void gather(const std::vector<Index>& source) { fields_.gather(source); }
+    void gather(const std::vector<Index>& source) {
+        fields_.gather(source);
+        ++generation_;
+    }
+    /// Changes each time particles are added, removed or reordered: per-particle data kept outside the
+    /// registry (neighbour lists, per-step scratch) records it and is valid while it is unchanged.
+    std::uint64_t generation() const noexcept { return generation_; }
+    /// The next free particle id (64-bit counter; ids are written as int32 and checked against it).
+    std::int64_t next_id() const noexcept { return next_id_; }
+
+    /// Every saved field and the id counter into `group` (a checkpoint's particle set).
+    void save(io::Hdf5Group& group) const {
+        fields_.save(group);
+        group.write("next_id", next_id_);
+    }
+    /// Reads back what save() wrote; the set must have the same fields registered.
+    void load(const io::Hdf5Group& group) {
+        fields_.load(group);
+        next_id_ = group.read_int("next_id");
+        ++generation_;
+    }
 
     Vec* position() noexcept { return position_->data(); }
     Vec* velocity() noexcept { return velocity_->data(); }
@@ -117,7 +146,8 @@ private:
     Field<std::int32_t>* phase_;
     Field<std::int32_t>* material_;
     Field<std::int32_t>* id_;
-    std::int32_t next_id_ = 0;
+    std::int64_t next_id_ = 0;
+    std::uint64_t generation_ = 0;
 };
 
 }  // namespace grit::particles

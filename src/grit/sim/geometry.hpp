@@ -8,6 +8,14 @@
 
 namespace grit::sim {
 
+/// True when x lies inside the box [lo, hi] (bounds included).
+template <int Dim>
+bool inside(const core::Vec<Dim>& x, const std::vector<double>& lo, const std::vector<double>& hi) {
+    for (int k = 0; k < Dim; ++k)
+        if (x[k] < lo[static_cast<std::size_t>(k)] || x[k] > hi[static_cast<std::size_t>(k)]) return false;
+    return true;
+}
+
 /// Lattice points (spacing dx, cell-centred, aligned with the shape's min corner) filling `shape`.
 /// A tank yields its walls: `layers` of points outside the inner box on every side not listed as open.
 template <int Dim>

@@ -1,10 +1,10 @@
-// The step pipeline: named stages run in order, each timed by name. Later physics adds stages
-// (material update, DEM contacts, coupling) without touching the others.
+// The step pipeline: named stages at named hook points, run in hook order (and, within a hook, in the
+// order the modules installed them), each timed by name. A module adds its stages at its hooks without
+// touching the others'.
 #pragma once
 
 #include <algorithm>
 #include <functional>
-#include <initializer_list>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,37 +13,57 @@
 
 namespace grit::sim {
 
+/// The hook points of one time step, in the order they run.
+enum class Hook {
+    begin_step,  ///< first half of the integrator (predict to the whole step)
+    boundaries,  ///< particles enter and leave (inlets, outlets)
+    neighbors,   ///< neighbour lists
+    pressure,    ///< equations of state
+    pre_force,   ///< what the force sums read (wall pressure, per-step scratch)
+    force,       ///< the SPH sums
+    post_force,  ///< forces between particle sets (grain contact, coupling), then the grains' step
+    integrate,   ///< second half of the integrator
+    end_step,    ///< material updates, removals
+    check,       ///< health check and the next time step (the Simulation's own)
+};
+
 class Pipeline {
 public:
-    /// Appends a stage.
-    void add(std::string name, std::function<void()> run) {
-        stages_.push_back({{std::move(name), 0.0, 0}, std::move(run)});
+    /// Adds a stage at `hook`, after the stages already there. `prime`: it also runs before the first
+    /// step to compute the rates of the initial state (pressures and forces, the first time step).
+    void add(Hook hook, std::string name, std::function<void()> run, bool prime = false) {
+        if (has(name)) throw std::logic_error("stage '" + name + "' installed twice");
+        auto it = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.hook > hook; });
+        stages_.insert(it, {{std::move(name), 0.0, 0}, hook, prime, std::move(run)});
     }
-    /// Inserts a stage just before the stage named `before`.
-    void insert_before(const std::string& before, std::string name, std::function<void()> run) {
-        auto it = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.timer.name == before; });
-        if (it == stages_.end()) throw std::logic_error("no stage '" + before + "'");
-        stages_.insert(it, {{std::move(name), 0.0, 0}, std::move(run)});
+    bool has(const std::string& name) const {
+        return std::any_of(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.timer.name == name; });
     }
     /// Runs every stage in order.
     void run() {
         for (auto& s : stages_) run_stage(s);
     }
-    /// Runs only the named stages, in pipeline order (e.g. the force stages before the first step).
-    void run_only(std::initializer_list<const char*> names) {
+    /// Runs the stages marked `prime`, in pipeline order.
+    void run_prime() {
         for (auto& s : stages_)
-            for (const char* n : names)
-                if (s.timer.name == n) run_stage(s);
+            if (s.prime) run_stage(s);
     }
     std::vector<core::TimerEntry> timers() const {
         std::vector<core::TimerEntry> out;
         for (const auto& s : stages_) out.push_back(s.timer);
         return out;
     }
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (const auto& s : stages_) out.push_back(s.timer.name);
+        return out;
+    }
 
 private:
     struct Stage {
         core::TimerEntry timer;
+        Hook hook;
+        bool prime;
         std::function<void()> run;
     };
     static void run_stage(Stage& s) {

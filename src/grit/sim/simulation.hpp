@@ -1,4 +1,5 @@
-// A run of one case: the particle set, the models chosen by the case, the step pipeline and outputs.
+// A run of one case: the run state, the modules the case needs, the step pipeline they install, the run
+// loop with its outputs, the health check and the last-good backup, and checkpoints.
 #pragma once
 
 #include <filesystem>
@@ -7,22 +8,19 @@
 #include <string>
 #include <vector>
 
-#include "grit/analysis/cracks.hpp"
-#include "grit/analysis/crater.hpp"
-#include "grit/analysis/diagnostics.hpp"
-#include "grit/boundary/jet_inlet.hpp"
 #include "grit/core/timer.hpp"
 #include "grit/io/case_spec.hpp"
 #include "grit/io/pvd_writer.hpp"
 #include "grit/io/series_writer.hpp"
-#include "grit/neighbors/cell_grid.hpp"
-#include "grit/neighbors/neighbor_list.hpp"
-#include "grit/particles/sph_particles.hpp"
-#include "grit/sim/grain_phase.hpp"
+#include "grit/sim/module.hpp"
 #include "grit/sim/pipeline.hpp"
-#include "grit/sph/fluid_rates.hpp"
+#include "grit/sim/state.hpp"
 #include "grit/sph/kernels.hpp"
-#include "grit/sph/solid_rates.hpp"
+
+namespace grit::modules {
+template <int Dim>
+class ProbesModule;
+}
 
 namespace grit::sim {
 
@@ -30,31 +28,38 @@ struct RunOptions {
     std::filesystem::path output_dir;
     bool quiet = false;
     bool write_files = true;  ///< false: run in memory only (tests, benchmarks)
+    /// Continue from this checkpoint file, or from the latest checkpoint in this run folder; empty: a
+    /// fresh run.
+    std::filesystem::path restart;
 };
 
 /// What a finished run reports (also written to summary.json).
 struct RunSummary {
+    std::string status;  ///< "completed", "interrupted" or "blow_up"
     Index particles = 0;
     long steps = 0;
     double end_time = 0.0;
     double wall_time_s = 0.0;
     double particle_steps_per_second = 0.0;
     double pair_interactions_per_second = 0.0;
-    double kinetic_energy = 0.0, mass_total = 0.0, mass_in = 0.0, mass_out = 0.0, max_velocity = 0.0;
-    bool has_solids = false, has_crater = false;
-    double eroded_mass = 0.0, max_plastic_strain = 0.0, internal_energy = 0.0;
-    double crater_depth = 0.0, crater_width = 0.0;
-    bool has_cracks = false;
-    double damaged_area = 0.0;  ///< [m^2 per metre of thickness in 2D; m^3 in 3D]
-    Index crack_count = 0;
-    bool has_grains = false;
-    Index grains = 0;
-    double grain_kinetic_energy = 0.0;
-    std::size_t impacts = 0;
+    std::vector<OutputValue> values;  ///< every output value (series and summary) at the end
     std::vector<double> momentum;
-    std::vector<std::string> probe_names;
-    std::vector<double> probe_values;
     std::vector<core::TimerEntry> stages;
+    std::string restarted_from;  ///< the checkpoint a restarted run continued, or empty
+
+    /// The value named `name` (throws std::out_of_range if there is none).
+    double value(const std::string& name) const;
+};
+
+/// Thrown when the run stopped on SIGINT or SIGTERM after writing its checkpoint; the CLI exits with
+/// 128 + signal (130 for Ctrl-C, 143 for SIGTERM).
+class Interrupted : public std::runtime_error {
+public:
+    Interrupted(int signal, const std::string& what) : std::runtime_error(what), signal_(signal) {}
+    int signal() const noexcept { return signal_; }
+
+private:
+    int signal_;
 };
 
 template <int Dim>
@@ -62,10 +67,15 @@ class Simulation {
 public:
     using Vec = core::Vec<Dim>;
 
-    /// Builds the particles and models of `spec`. Throws core::InputError for an impossible case.
+    /// Builds the state and modules of `spec`. Throws core::InputError for an impossible case.
     Simulation(io::CaseSpec spec, RunOptions options);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
 
-    /// Runs to the case's end time. Throws core::BlowUpError (after writing the last good snapshot).
+    /// Runs to the case's end time (from the checkpoint of options.restart if given). Throws
+    /// core::BlowUpError (after writing the last good snapshot), Interrupted on SIGINT/SIGTERM (after
+    /// writing a checkpoint), core::InputError for a checkpoint that does not fit the case.
     RunSummary run();
 
     /// Advances one time step (public for tests and benchmarks).
@@ -75,97 +85,78 @@ public:
     /// Computes the rates of the current state (before the first step).
     void prime();
 
-    particles::SphParticles<Dim>& particles() { return particles_; }
-    double time() const { return time_; }
-    double time_step() const { return dt_; }
-    long steps() const { return step_; }
-    double mass_in() const { return mass_in_; }
-    double mass_out() const { return mass_out_; }
-    double eroded_mass() const { return eroded_mass_; }
+    /// Writes the run state and every module's own state to `file` (atomically: a temporary file, then
+    /// a rename). Continuing from it is bit-identical to not stopping.
+    void save_checkpoint(const std::filesystem::path& file);
+    /// Reads a checkpoint written by a run of this case. Throws core::InputError naming what does not fit
+    /// (another case, another spacing, dimension or materials, another format version, an unreadable file).
+    void load_checkpoint(const std::filesystem::path& file);
+
+    State<Dim>& state() { return state_; }
+    particles::SphParticles<Dim>& particles() { return state_.particles; }
+    double time() const { return state_.clock.time; }
+    double time_step() const { return state_.clock.dt; }
+    long steps() const { return state_.clock.step; }
+    double mass_in() const { return state_.ledger.in; }
+    double mass_out() const { return state_.ledger.out; }
+    double eroded_mass() const { return state_.ledger.eroded; }
     const Pipeline& pipeline() const { return pipeline_; }
-    std::size_t pair_count() const { return neighbors_.pair_count(); }
+    std::size_t pair_count() const { return state_.neighbors.list().pair_count(); }
+    /// Value of probe k (case order) now.
     double probe(std::size_t k) const;
     /// Value of the probe named `name` now (throws std::out_of_range if there is none).
     double probe(const std::string& name) const;
     const io::CaseSpec& spec() const { return spec_; }
     /// The grains, or null when the case has none.
-    GrainPhase<Dim>* grains() { return grains_.get(); }
+    dem::DemSystem<Dim>* grains() { return state_.grains.get(); }
+    const wear::ImpactLog& impacts() const { return state_.impacts; }
+    /// Every output value at the current state, in column order.
+    std::vector<OutputValue> output_values() const;
 
 private:
     void build_particles();
-    void build_pipeline();
-
-    void integrate_predict();
-    void integrate_update();
-    void apply_boundaries();
-    void update_neighbors(bool force);
-    void compute_time_step();
-    void register_solid_fields();
-    struct SolidMeasures {
-        double max_plastic_strain = 0.0;
-        double internal_energy = 0.0;  ///< sum of m e over solids [J]
-        analysis::CraterProfile crater;
-        analysis::CrackMeasures cracks;
-    };
-    SolidMeasures solid_measures() const;
-    void update_solid_stress();
-    void apply_brittle_pressure();
-    void remove_failed_solids();
-    /// True for particles the integrator moves: fluid, and solids that are not clamped.
-    bool moves(Index i) const;
     void check_health();
-
+    void compute_time_step();
+    void open_output(bool restart);
     void write_output();
-    void write_summary(const RunSummary& summary, const std::string& status, const std::string& message) const;
-    RunSummary summarize(double wall_time) const;
+    void write_checkpoint();
+    void write_summary(const RunSummary& summary, const std::string& message) const;
+    RunSummary summarize(double wall_time, const std::string& status) const;
 
     io::CaseSpec spec_;
     RunOptions options_;
-    particles::SphParticles<Dim> particles_;
     sph::Kernel<Dim> kernel_;
-    double spacing_, smoothing_length_;
-    sph::FluidRateParameters<Dim> fluid_parameters_;
-    std::vector<double> signal_speed_;  ///< per material: the wave speed of the CFL condition [m/s]
-    sph::SphWorkspace sph_workspace_;
-    bool has_solids_ = false;
-    bool has_sph_ = true;  ///< false for a grains-only case: the SPH stages are left out
-    sph::SolidRateParameters<Dim> solid_parameters_;
-    sph::SolidWorkspace solid_workspace_;
-    double eroded_mass_ = 0.0;
-    std::vector<bool> brittle_;  ///< per material: a JH-2 solid (fractured particles stay until detached)
-    std::unique_ptr<GrainPhase<Dim>> grains_;
-    double dt_stable_ = 0.0;  ///< the last stable step, before any shortening to land on an output time
-    std::vector<boundary::JetInlet<Dim>> inlets_;
-    Vec domain_min_, domain_max_;
-    double max_speed_;
-
-    neighbors::CellGrid<Dim> grid_;
-    neighbors::NeighborList<Dim> neighbors_;
-    std::vector<Index> order_, cell_start_;
-    bool neighbors_stale_ = true;
-    bool primed_ = false;
-    long neighbor_builds_ = 0;
-
+    RunSetup<Dim> setup_;
+    State<Dim> state_;
+    std::vector<std::unique_ptr<Module<Dim>>> modules_;
+    modules::ProbesModule<Dim>* probes_ = nullptr;
     Pipeline pipeline_;
-    double time_ = 0.0, dt_ = 0.0;
-    long step_ = 0;
-    double particle_steps_ = 0.0, pair_steps_ = 0.0;
-    double mass_in_ = 0.0, mass_out_ = 0.0;
+    bool has_sph_ = true;  ///< false for a grains-only case: no SPH module
+    bool primed_ = false;
+    double particle_steps_ = 0.0, pair_steps_ = 0.0;  ///< of this session (for the rates)
 
     particles::SphParticles<Dim> last_good_;
     double last_good_time_ = 0.0;
     long last_good_step_ = 0;
 
-    double next_output_ = 0.0;
+    OutputPlace place_;
+    double next_output_ = 0.0, next_checkpoint_ = 0.0;
     long snapshot_index_ = 0;
     std::unique_ptr<io::PvdWriter> pvd_;
     std::unique_ptr<io::SeriesWriter> series_;
+    std::vector<io::PvdWriter::Entry> restored_pvd_;
+    long restored_series_rows_ = 0;
+    std::filesystem::path restarted_from_;
 };
 
 extern template class Simulation<2>;
 extern template class Simulation<3>;
 
-/// Reads nothing, runs `spec` in its dimension; returns the summary. Used by the CLI and tests.
+/// Runs `spec` in its dimension; returns the summary. Used by the CLI and tests.
 RunSummary run_case(const io::CaseSpec& spec, const RunOptions& options);
+
+/// The checkpoint a restart from `path` continues: `path` itself if it is a file, else the latest
+/// (highest step) `checkpoints/*.h5` in the run folder `path`. Throws core::InputError if there is none.
+std::filesystem::path resolve_checkpoint(const std::filesystem::path& path);
 
 }  // namespace grit::sim

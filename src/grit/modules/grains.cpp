@@ -1,0 +1,187 @@
+// The grains module: set-up from the case, the DEM step, plane impacts, outputs.
+#include "grit/modules/grains.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "grit/core/error.hpp"
+#include "grit/dem/grain_fill.hpp"
+#include "grit/io/vtu_writer.hpp"
+#include "grit/parallel/parallel.hpp"
+
+namespace grit::modules {
+
+using core::to_vec;
+
+template <int Dim>
+double impact_angle(const core::Vec<Dim>& v, const core::Vec<Dim>& n) {
+    const double speed = core::norm(v), length = core::norm(n);
+    if (!(speed > 0.0) || !(length > 0.0)) return 90.0;
+    return std::asin(std::min(1.0, std::abs(core::dot(v, n)) / (speed * length))) * 180.0 / std::numbers::pi;
+}
+
+template double impact_angle<2>(const core::Vec<2>&, const core::Vec<2>&);
+template double impact_angle<3>(const core::Vec<3>&, const core::Vec<3>&);
+
+template <int Dim>
+GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup) {
+    const auto& spec = setup.spec;
+    dem::DemParameters<Dim> p;
+    p.contact_law = spec.dem.contact_law;
+    p.gravity = to_vec<Dim>(spec.gravity);
+    p.skin = spec.dem.skin;
+    for (int k = 0; k < Dim; ++k) p.domain.periodic[k] = spec.dem.periodic[static_cast<std::size_t>(k)];
+    p.domain.lower = to_vec<Dim>(spec.domain_min);
+    p.domain.upper = to_vec<Dim>(spec.domain_max);
+    state.grains = std::make_unique<dem::DemSystem<Dim>>(p, spec.grain_materials);
+    auto& system = *state.grains;
+    system.grains().fields().template add<std::int32_t>("contact_targets", 0, false);
+
+    if (static_cast<int>(spec.grain_walls.size()) > max_grain_planes)
+        throw core::InputError(fmt::format("key 'grain_wall': at most {} plane walls", max_grain_planes));
+    for (const auto& w : spec.grain_walls) {
+        system.add_wall({to_vec<Dim>(w.point), to_vec<Dim>(w.normal), w.material});
+        wall_names_.push_back(w.name);
+    }
+    for (const auto& b : spec.grains) {
+        std::vector<dem::GrainSeed<Dim>> seeds;
+        if (b.arrangement == "single") {
+            std::mt19937_64 rng(b.seed);
+            seeds.push_back({to_vec<Dim>(b.position), dem::draw_diameter(b.size, rng)});
+        } else if (b.arrangement == "lattice") {
+            seeds = dem::lattice_fill<Dim>(to_vec<Dim>(b.min), to_vec<Dim>(b.max), b.spacing, b.size, b.seed, b.jitter);
+        } else {
+            seeds = dem::random_fill<Dim>(to_vec<Dim>(b.min), to_vec<Dim>(b.max), static_cast<std::size_t>(b.count),
+                                          b.size, b.seed);
+            if (seeds.size() < static_cast<std::size_t>(b.count))
+                throw core::InputError(fmt::format("{}: only {} of count = {} grains fit in the box without overlap",
+                                                   b.key, seeds.size(), b.count));
+        }
+        if (seeds.empty()) throw core::InputError(fmt::format("{}: the arrangement holds no grain", b.key));
+        for (const auto& s : seeds) {
+            for (int k = 0; k < Dim; ++k)
+                if (!spec.dem.periodic[static_cast<std::size_t>(k)] &&
+                    (s.position[k] < spec.domain_min[static_cast<std::size_t>(k)] ||
+                     s.position[k] > spec.domain_max[static_cast<std::size_t>(k)]))
+                    throw core::InputError(fmt::format(
+                        "{}: a grain at ({}) lies outside the domain (domain.min/domain.max); enlarge the domain",
+                        b.key, fmt::join(std::vector<double>(s.position.c, s.position.c + Dim), ", ")));
+            system.add_grain(s.position, 0.5 * s.diameter, b.material, to_vec<Dim>(b.velocity));
+        }
+    }
+}
+
+template <int Dim>
+void GrainsModule<Dim>::install(sim::Pipeline& pipeline) {
+    pipeline.add(sim::Hook::post_force, "grain_motion", [this] { advance(); });
+}
+
+template <int Dim>
+void GrainsModule<Dim>::prime() {
+    state_.grains->compute_forces(0.0);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::advance() {
+    auto& system = *state_.grains;
+    const double time = state_.clock.time, dt = state_.clock.dt;
+    if (state_.clock.step != 0) system.end_step(dt);
+    system.begin_step(dt);
+
+    // First contacts with the plane walls, at the new positions.
+    auto& grains = system.grains();
+    std::int32_t* mask = grains.fields().template get<std::int32_t>("contact_targets").data();
+    const auto& walls = system.walls();
+    const auto* x = grains.position();
+    const auto* v = grains.velocity();
+    const double* r = grains.radius();
+    for (Index g = 0; g < grains.size(); ++g) {
+        for (std::size_t w = 0; w < walls.size(); ++w) {
+            const std::int32_t bit = 1 << w;
+            const bool touching = core::dot(x[g] - walls[w].point, walls[w].normal) < r[g];
+            if (touching && !(mask[g] & bit))
+                state_.impacts.add({time + dt, grains.id()[g], wall_names_[w], core::norm(v[g]),
+                                    impact_angle<Dim>(v[g], walls[w].normal)});
+            mask[g] = touching ? (mask[g] | bit) : (mask[g] & ~bit);
+        }
+    }
+}
+
+template <int Dim>
+double GrainsModule<Dim>::stable_time_step() const {
+    return state_.grains->stable_time_step();
+}
+
+template <int Dim>
+std::string GrainsModule<Dim>::check_health() const {
+    const auto& spec = setup_.spec;
+    const auto& grains = state_.grains->grains();
+    const auto* x = grains.position();
+    const auto* v = grains.velocity();
+    const auto& periodic = state_.grains->parameters().domain.periodic;
+    const Index bad = parallel::first_index(grains.size(), [&](Index i) {
+        if (!core::all_finite(x[i]) || !core::all_finite(v[i])) return true;
+        for (int k = 0; k < Dim; ++k)
+            if (!periodic[k] && (x[i][k] < spec.domain_min[static_cast<std::size_t>(k)] ||
+                                 x[i][k] > spec.domain_max[static_cast<std::size_t>(k)]))
+                return true;
+        return false;
+    });
+    if (bad < 0) return {};
+    const std::string what = !core::all_finite(x[bad]) ? "position is not finite"
+                             : !core::all_finite(v[bad]) ? "velocity is not finite"
+                                                         : "escaped the domain (domain.min/domain.max)";
+    return fmt::format("grain {} at ({:.6g}): {}", grains.id()[bad],
+                       fmt::join(std::vector<double>(x[bad].c, x[bad].c + Dim), ", "), what);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    out.push_back(sim::OutputValue::count("grains", static_cast<double>(state_.grains->grains().size())));
+    out.push_back(sim::OutputValue::real("grain_kinetic_energy", state_.grains->kinetic_energy()));
+    out.push_back(sim::OutputValue::count("impacts", static_cast<double>(state_.impacts.total())).summary_only());
+}
+
+template <int Dim>
+void GrainsModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
+    namespace fs = std::filesystem;
+    fs::create_directories(place.dir / "grains");
+    // A fresh run clears the old snapshots; a restart keeps those its checkpoint lists (load() removes
+    // the ones written after it).
+    if (!restart)
+        for (const auto& e : fs::directory_iterator(place.dir / "grains"))
+            if (e.path().extension() == ".vtu") fs::remove(e.path());
+    pvd_ = std::make_unique<io::PvdWriter>(place.dir / (place.name + "_grains.pvd"));
+    if (restart) pvd_->restore(restored_pvd_);
+    state_.impacts.open(place.dir / "impacts.csv", restart ? static_cast<long>(state_.impacts.total()) : -1);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::write_output(const sim::OutputPlace& place) {
+    if (place.snapshots) {
+        const auto file = fmt::format("grains/{}_grains_{:06}.vtu", place.name, snapshot_index_++);
+        io::write_vtu(place.dir / file, state_.grains->grains().snapshot());
+        pvd_->add(state_.clock.time, file);
+    }
+    state_.impacts.flush();
+}
+
+template <int Dim>
+void GrainsModule<Dim>::save(io::Hdf5Group& group) {
+    group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
+    io::save_pvd_entries(group, "pvd", pvd_ ? pvd_->entries() : restored_pvd_);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::load(const io::Hdf5Group& group) {
+    snapshot_index_ = static_cast<long>(group.read_int("snapshot_index"));
+    restored_pvd_ = io::load_pvd_entries(group, "pvd");
+}
+
+template class GrainsModule<2>;
+template class GrainsModule<3>;
+
+}  // namespace grit::modules

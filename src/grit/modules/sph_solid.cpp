@@ -1,0 +1,192 @@
+// The solid SPH module: fields, pressure, sums, material update and erosion.
+#include "grit/modules/sph_solid.hpp"
+
+#include <stdexcept>
+
+#include "grit/material/solid_model.hpp"
+#include "grit/parallel/parallel.hpp"
+#include "grit/sph/pressure.hpp"
+
+namespace grit::modules {
+
+template <int Dim>
+SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup, const SphModule<Dim>& sph)
+    : state_(state), setup_(setup), sph_(sph) {
+    particles::FieldRegistry& f = state.particles.fields();
+    f.add<core::SymTensor3>("deviatoric_stress", core::SymTensor3::zero(), true);
+    f.add<double>("plastic_strain", 0.0, true);
+    f.add<double>("damage", 0.0, true);
+    f.add<double>("von_mises", 0.0, true);
+    f.add<double>("temperature", 0.0, true);
+    f.add<double>("specific_energy", 0.0, false);
+    f.add<double>("bulking_pressure", 0.0, true);
+    f.add<std::int32_t>("fixed", 0, true);  // clamped particles (set by the open-boundaries module)
+
+    for (const auto& m : setup.spec.materials) brittle_.push_back(std::holds_alternative<material::JH2>(m.solid_model));
+    parameters_.gravity = core::to_vec<Dim>(setup.spec.gravity);
+    parameters_.artificial_stress = setup.spec.artificial_stress;
+    parameters_.spacing = setup.spacing;
+    parameters_.materials = sph.pair_coefficients();
+}
+
+template <int Dim>
+void SolidModule<Dim>::initialise() {
+    auto& ps = state_.particles;
+    auto& temperature = ps.fields().template get<double>("temperature");
+    for (Index i = 0; i < ps.size(); ++i)
+        if (ps.phase()[i] == static_cast<std::int32_t>(Phase::solid))
+            temperature[i] = setup_.spec.materials[static_cast<std::size_t>(ps.material()[i])].solid.room_temperature;
+}
+
+template <int Dim>
+void SolidModule<Dim>::install(sim::Pipeline& pipeline) {
+    using sim::Hook;
+    auto& ps = state_.particles;
+    pipeline.add(Hook::pressure, "solid_pressure", [this] { update_pressure(); }, true);
+    pipeline.add(Hook::force, "sph_solid", [this, &ps] {
+        sph::compute_solid_rates(ps, state_.neighbors.list(), setup_.kernel, parameters_, sph_.workspace(), workspace_);
+        workspace_generation_ = ps.generation();
+    }, true);
+    pipeline.add(Hook::end_step, "solid_stress", [this] { update_stress(); });
+    pipeline.add(Hook::end_step, "erosion", [this] { remove_failed(); });
+}
+
+template <int Dim>
+void SolidModule<Dim>::update_pressure() {
+    auto& ps = state_.particles;
+    sph::update_pressure(ps, setup_.spec.materials, Phase::solid,
+                         ps.fields().template get<double>("specific_energy").data());
+    // JH-2 (eqs. 40-41): the polynomial EOS value plus the bulking increment in compression, and tension
+    // limited to -T (1 - D).
+    const auto& f = ps.fields();
+    const double* damage = f.template get<double>("damage").data();
+    const double* bulking = f.template get<double>("bulking_pressure").data();
+    const double* rho = ps.density();
+    double* p = ps.pressure();
+    const std::int32_t* ph = ps.phase();
+    const std::int32_t* mat = ps.material();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const auto& materials = setup_.spec.materials;
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        const auto* jh2 = std::get_if<material::JH2>(&materials[m].solid_model);
+        if (!jh2 || materials[m].phase != Phase::solid) continue;
+        const auto id = static_cast<std::int32_t>(m);
+        const double rho0 = jh2->reference_density, tension = jh2->strength.tensile_pressure();
+        parallel::for_each(ps.size(), [&](Index i) {
+            if (ph[i] != solid || mat[i] != id) return;
+            p[i] = material::jh2_pressure(p[i], rho[i] / rho0 - 1.0, bulking[i], damage[i], tension);
+        });
+    }
+}
+
+template <int Dim>
+void SolidModule<Dim>::update_stress() {
+    // Material update of every solid particle (first seed paper Fig. 6): Jaumann rate, radial return,
+    // plastic strain, damage, temperature; and the specific internal energy. One loop per material,
+    // dispatched once on its constitutive model. Reads the strain rate and spin of this step's solid
+    // sums: scratch outside the registry, valid while the particle set is unchanged since.
+    auto& ps = state_.particles;
+    if (workspace_generation_ != ps.generation())
+        throw std::logic_error("solid workspace read after the particle set changed");
+    auto& f = ps.fields();
+    core::SymTensor3* tau = f.template get<core::SymTensor3>("deviatoric_stress").data();
+    double* eps_p = f.template get<double>("plastic_strain").data();
+    double* damage = f.template get<double>("damage").data();
+    double* vm = f.template get<double>("von_mises").data();
+    double* temperature = f.template get<double>("temperature").data();
+    double* energy = f.template get<double>("specific_energy").data();
+    double* bulking = f.template get<double>("bulking_pressure").data();
+    const double* p = ps.pressure();
+    const double* rho = ps.density();
+    const std::int32_t* ph = ps.phase();
+    const std::int32_t* mat = ps.material();
+    const core::SymTensor3* rate = workspace_.strain_rate.data();
+    const material::Spin* spin = workspace_.spin.data();
+    const double* de = workspace_.energy_rate.data();
+    const double dt = state_.clock.dt;
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const auto& materials = setup_.spec.materials;
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        const auto& material = materials[m];
+        if (material.phase != Phase::solid) continue;
+        const auto id = static_cast<std::int32_t>(m);
+        std::visit(
+            [&](const auto& model) {
+                parallel::for_each(ps.size(), [&](Index i) {
+                    if (ph[i] != solid || mat[i] != id) return;
+                    material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
+                    s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt);
+                    tau[i] = s.deviatoric_stress;
+                    eps_p[i] = s.plastic_strain;
+                    damage[i] = s.damage;
+                    temperature[i] = s.temperature;
+                    bulking[i] = s.bulking_pressure;
+                    vm[i] = s.deviatoric_stress.von_mises();
+                    energy[i] += de[i] * dt;
+                });
+            },
+            material.solid_model);
+    }
+}
+
+template <int Dim>
+void SolidModule<Dim>::remove_failed() {
+    // Ductile (eq. 36): a particle with D >= 1 is removed and its mass booked as eroded.
+    // Brittle (JH-2): a fractured particle still carries pressure, so it stays while it touches intact
+    // rock (a crack); it is removed once it is detached, when no solid particle within 1.5 spacings
+    // (its nearest and diagonal neighbours) has D < 1: loose fragments and comminuted rubble.
+    auto& ps = state_.particles;
+    const double* damage = ps.fields().template get<double>("damage").data();
+    const std::int32_t* ph = ps.phase();
+    const std::int32_t* mat = ps.material();
+    const auto* x = ps.position();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const Index n = ps.size();
+    const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
+    const auto& list = state_.neighbors.list();
+    const Index* nb = list.indices();
+    std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
+    parallel::for_each(n, [&](Index i) {
+        if (ph[i] != solid || damage[i] < 1.0) return;
+        if (brittle_[static_cast<std::size_t>(mat[i])]) {
+            for (Index k = list.begin(i); k < list.end(i); ++k) {
+                const Index j = nb[k];
+                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(x[j] - x[i]) <= reach2) return;
+            }
+        }
+        gone[static_cast<std::size_t>(i)] = 1;
+    });
+    const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
+    if (failed == 0) return;
+    const double* m = ps.mass();
+    std::vector<Index> keep;
+    keep.reserve(static_cast<std::size_t>(n - failed));
+    for (Index i = 0; i < n; ++i) {
+        if (gone[static_cast<std::size_t>(i)])
+            state_.ledger.eroded += m[i];
+        else
+            keep.push_back(i);
+    }
+    ps.gather(keep);
+}
+
+template <int Dim>
+void SolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    const auto& ps = state_.particles;
+    const auto& f = ps.fields();
+    const double* eps_p = f.template get<double>("plastic_strain").data();
+    const double* e = f.template get<double>("specific_energy").data();
+    const double* m = ps.mass();
+    const std::int32_t* ph = ps.phase();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const double max_eps = parallel::max(ps.size(), 0.0, [&](Index i) { return ph[i] == solid ? eps_p[i] : 0.0; });
+    const double internal = parallel::sum(ps.size(), 0.0, [&](Index i) { return ph[i] == solid ? m[i] * e[i] : 0.0; });
+    out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded));
+    out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps));
+    out.push_back(sim::OutputValue::real("internal_energy", internal));  // sum of m e over solids [J]
+}
+
+template class SolidModule<2>;
+template class SolidModule<3>;
+
+}  // namespace grit::modules

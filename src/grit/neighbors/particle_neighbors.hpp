@@ -1,0 +1,89 @@
+// The neighbour lists of an SPH particle set, with what keeps them valid: the cell grid and sort that
+// order the particles before each build, and the particle set's generation at the build (lists are
+// stale once particles were added, removed or reordered, or one has moved more than skin / 2).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "grit/io/hdf5_file.hpp"
+#include "grit/neighbors/cell_grid.hpp"
+#include "grit/neighbors/neighbor_list.hpp"
+#include "grit/particles/sph_particles.hpp"
+
+namespace grit::neighbors {
+
+template <int Dim>
+class ParticleNeighbors {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// Brings the lists up to date for `particles` with list radius `radius` (support + skin): when
+    /// forced, when the set changed since the build, or when a particle has moved more than skin / 2,
+    /// the particles are sorted by cell (every field) and the lists rebuilt. Returns true if rebuilt.
+    bool update(particles::SphParticles<Dim>& particles, double radius, double skin, bool force) {
+        const Index n = particles.size();
+        if (!force && valid_for(particles) && list_.max_displacement2(particles.position(), n) < 0.25 * skin * skin)
+            return false;
+        // Sorting keeps neighbours close in memory.
+        grid_ = CellGrid<Dim>::covering(particles.position(), n, radius);
+        sort_by_cell(grid_, particles.position(), n, order_, cell_start_);
+        particles.gather(order_);
+        list_.build(grid_, cell_start_, particles.position(), n, radius, particles.phase());
+        built_generation_ = particles.generation();
+        ++builds_;
+        return true;
+    }
+
+    /// True while the lists belong to the set as it is (no particle added, removed or reordered since).
+    bool valid_for(const particles::SphParticles<Dim>& particles) const {
+        return built_() && built_generation_ == particles.generation();
+    }
+    const NeighborList<Dim>& list() const noexcept { return list_; }
+    long builds() const noexcept { return builds_; }
+
+    /// For a checkpoint: whether the lists are valid and the positions they were built at.
+    void save(io::Hdf5Group& group, const particles::SphParticles<Dim>& particles) const {
+        group.write("builds", static_cast<std::int64_t>(builds_));
+        const bool valid = valid_for(particles);
+        group.write("valid", std::int64_t{valid});
+        if (valid)
+            group.write("reference_positions", reinterpret_cast<const double*>(list_.reference_positions()),
+                        static_cast<std::size_t>(list_.particle_count()), Dim);
+    }
+    /// Rebuilds the lists of a loaded set from the positions they were built at: the particles are still
+    /// in that build's cell order, so the grid, the order and the lists come out as they were.
+    void load(const io::Hdf5Group& group, const particles::SphParticles<Dim>& particles, double radius) {
+        builds_ = static_cast<long>(group.read_int("builds"));
+        built_generation_ = never;
+        list_ = NeighborList<Dim>();
+        if (group.read_int("valid") == 0) return;
+        std::size_t rows = 0;
+        const auto raw = group.read_doubles("reference_positions", Dim, rows);
+        const Index n = particles.size();
+        if (rows != static_cast<std::size_t>(n))
+            throw io::Hdf5Error(group.path() + "/reference_positions: one row per particle expected");
+        std::vector<Vec> reference(rows);
+        for (std::size_t i = 0; i < rows; ++i)
+            for (int k = 0; k < Dim; ++k) reference[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
+        grid_ = CellGrid<Dim>::covering(reference.data(), n, radius);
+        sort_by_cell(grid_, reference.data(), n, order_, cell_start_);
+        for (Index i = 0; i < n; ++i)
+            if (order_[static_cast<std::size_t>(i)] != i)
+                throw io::Hdf5Error(group.path() + ": the particles are not in the order of their neighbour lists");
+        list_.build(grid_, cell_start_, reference.data(), n, radius, particles.phase());
+        built_generation_ = particles.generation();
+    }
+
+private:
+    static constexpr std::uint64_t never = ~std::uint64_t{0};
+    bool built_() const noexcept { return built_generation_ != never; }
+
+    CellGrid<Dim> grid_;
+    NeighborList<Dim> list_;
+    std::vector<Index> order_, cell_start_;
+    std::uint64_t built_generation_ = never;
+    long builds_ = 0;
+};
+
+}  // namespace grit::neighbors

@@ -1,0 +1,94 @@
+// A module owns one piece of physics end to end (DESIGN.md section 2): it registers its fields, installs
+// its stages at the pipeline's hook points, gives its stable time step, supplies its output values
+// (name and value in one place, for series.csv and summary.json), checks its own health, writes its own
+// output files and saves and loads what it holds beyond the State.
+#pragma once
+
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "grit/io/case_spec.hpp"
+#include "grit/io/hdf5_file.hpp"
+#include "grit/sim/pipeline.hpp"
+#include "grit/sim/state.hpp"
+#include "grit/sph/kernels.hpp"
+
+namespace grit::sim {
+
+/// One output value: a column of series.csv and/or a key of summary.json, e.g.
+/// `OutputValue::real("eroded_mass", m)`, `OutputValue::count("grains", n).summary_only()`.
+struct OutputValue {
+    std::string name;
+    double value = 0.0;
+    bool integer = false;    ///< written to summary.json as a whole number
+    bool in_series = true;   ///< a series.csv column
+    bool in_summary = true;  ///< a summary.json key
+    std::string group;       ///< summary.json: under this object (e.g. "probes"); empty: top level
+
+    static OutputValue real(std::string name, double value) { return {std::move(name), value, false, true, true, {}}; }
+    static OutputValue count(std::string name, double value) { return {std::move(name), value, true, true, true, {}}; }
+    OutputValue series_only() && {
+        in_summary = false;
+        return std::move(*this);
+    }
+    OutputValue summary_only() && {
+        in_series = false;
+        return std::move(*this);
+    }
+    OutputValue in_group(std::string g) && {
+        group = std::move(g);
+        return std::move(*this);
+    }
+};
+
+/// Set-up shared by the modules of a run, fixed for the run.
+template <int Dim>
+struct RunSetup {
+    const io::CaseSpec& spec;
+    double spacing;           ///< dx [m]
+    double smoothing_length;  ///< h [m]
+    const sph::Kernel<Dim>& kernel;
+    double max_speed;         ///< faster is a blow-up [m/s]
+};
+
+/// Where output files go (only when files are written).
+struct OutputPlace {
+    std::filesystem::path dir;
+    std::string name;        ///< the case's base name
+    bool snapshots = true;   ///< output.snapshots
+};
+
+template <int Dim>
+class Module {
+public:
+    virtual ~Module() = default;
+    /// A short name (checkpoint group, messages).
+    virtual std::string name() const = 0;
+
+    /// Adds the module's stages to the pipeline (called once, in module order).
+    virtual void install(Pipeline& pipeline) = 0;
+    /// After the initial particles are built (start values of its fields, checks of its set-up).
+    virtual void initialise() {}
+    /// Before the first step's prime stages: what the first state needs (lists, first forces).
+    virtual void prime() {}
+    /// Largest stable step of this module's physics [s]; infinity when it sets none.
+    virtual double stable_time_step() const { return std::numeric_limits<double>::infinity(); }
+    /// Empty, or what went wrong with which particle (the Simulation adds the step and writes the last
+    /// good state).
+    virtual std::string check_health() const { return {}; }
+    /// Output values at the current state, in column order.
+    virtual void output_values(std::vector<OutputValue>& /*out*/) const {}
+
+    /// Output files of its own: `open` before the first output (`restart`: continue the files of the
+    /// run a checkpoint came from), `write` at each output time.
+    virtual void open_output(const OutputPlace& /*place*/, bool /*restart*/) {}
+    virtual void write_output(const OutputPlace& /*place*/) {}
+
+    /// What the module holds beyond the State (inlet progress, output counters), for a checkpoint.
+    virtual void save(io::Hdf5Group& /*group*/) {}
+    virtual void load(const io::Hdf5Group& /*group*/) {}
+};
+
+}  // namespace grit::sim

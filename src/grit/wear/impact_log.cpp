@@ -1,0 +1,42 @@
+// Impact log: records, impacts.csv, checkpoint count.
+#include "grit/wear/impact_log.hpp"
+
+#include <fmt/format.h>
+
+#include "grit/io/csv_file.hpp"
+
+namespace grit::wear {
+
+void ImpactLog::open(const std::filesystem::path& file, long rows) {
+    if (rows >= 0) {
+        io::keep_csv_rows(file, rows);
+        file_.open(file, std::ios::app);
+    } else {
+        file_.open(file);
+        file_ << "time,grain,target,speed,angle\n";
+    }
+    if (!file_) throw std::runtime_error("cannot open '" + file.string() + "' for writing");
+    written_ = records_.size();
+}
+
+void ImpactLog::flush() {
+    if (!file_.is_open()) return;
+    for (; written_ < records_.size(); ++written_) {
+        const auto& r = records_[written_];
+        file_ << fmt::format("{:.9g},{},{},{:.9g},{:.6g}\n", r.time, r.grain, r.target, r.speed, r.angle);
+    }
+    file_.flush();
+}
+
+void ImpactLog::save(io::Hdf5Group& group) {
+    flush();
+    group.write("impacts", static_cast<std::int64_t>(total()));
+}
+
+void ImpactLog::load(const io::Hdf5Group& group) {
+    records_.clear();
+    written_ = 0;
+    earlier_ = static_cast<std::size_t>(group.read_int("impacts"));
+}
+
+}  // namespace grit::wear

@@ -1,0 +1,51 @@
+// The impact log: each first contact of a grain with a target (a plane wall, an SPH solid, SPH wall
+// particles; mesh walls later), with what wear models need: the relative speed and the impact angle.
+// Written to impacts.csv as it grows; wear models (Finnie, Bitter, Oka) will attach per-impact wear.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "grit/io/hdf5_file.hpp"
+
+namespace grit::wear {
+
+/// A grain's first contact with a target. Angle between the relative velocity and the target's surface
+/// [degrees] (90 = normal).
+struct ImpactRecord {
+    double time = 0.0;
+    std::int32_t grain = 0;  ///< persistent grain id
+    std::string target;
+    double speed = 0.0;  ///< [m/s]
+    double angle = 0.0;  ///< [deg]
+};
+
+class ImpactLog {
+public:
+    void add(ImpactRecord r) { records_.push_back(std::move(r)); }
+    /// The records of this run since it started or was restarted (earlier ones are in impacts.csv).
+    const std::vector<ImpactRecord>& records() const noexcept { return records_; }
+    /// Every impact of the run, restarts included.
+    std::size_t total() const noexcept { return earlier_ + records_.size(); }
+
+    /// Creates impacts.csv with its header, or, on a restart (`rows` >= 0), keeps its header and first
+    /// `rows` records (those written before the checkpoint) and appends after them.
+    void open(const std::filesystem::path& file, long rows = -1);
+    /// Appends the records not yet written.
+    void flush();
+
+    /// For a checkpoint: the number of impacts so far (all written by flush() first).
+    void save(io::Hdf5Group& group);
+    void load(const io::Hdf5Group& group);
+
+private:
+    std::vector<ImpactRecord> records_;
+    std::size_t written_ = 0;  ///< records_ already in the file
+    std::size_t earlier_ = 0;  ///< impacts before the restart this run continues
+    std::ofstream file_;
+};
+
+}  // namespace grit::wear

@@ -1,0 +1,172 @@
+// Checkpoint and restart: k steps, a checkpoint, a fresh Simulation loading it and N - k more steps give
+// the same state, bit for bit, as N steps straight -- for every shipped case (inlets, outlets, clamps,
+// grains with contact history, Johnson-Cook and JH-2 solids with damage and erosion). Also: what a
+// checkpoint that does not fit the case is told.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "grit/core/error.hpp"
+#include "grit/parallel/parallel.hpp"
+#include "support/case_fixture.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using grit::sim::Simulation;
+
+std::vector<fs::path> all_cases() {
+    std::vector<fs::path> out;
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(GRIT_SOURCE_DIR) / "cases"))
+        if (e.path().extension() == ".toml") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+fs::path scratch_file(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / "grit_restart_tests";
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+// Every field of two particle sets, bit for bit.
+void expect_same_fields(const grit::particles::FieldRegistry& a, const grit::particles::FieldRegistry& b,
+                        const std::string& what) {
+    ASSERT_EQ(a.size(), b.size()) << what;
+    const auto fa = a.all(), fb = b.all();
+    ASSERT_EQ(fa.size(), fb.size()) << what;
+    for (std::size_t k = 0; k < fa.size(); ++k) {
+        ASSERT_EQ(fa[k]->name(), fb[k]->name()) << what;
+        EXPECT_TRUE(fa[k]->bytes() == fb[k]->bytes()) << what << ": field " << fa[k]->name() << " differs";
+    }
+}
+
+template <int Dim>
+void expect_same_state(Simulation<Dim>& a, Simulation<Dim>& b) {
+    EXPECT_EQ(a.time(), b.time());
+    EXPECT_EQ(a.steps(), b.steps());
+    EXPECT_EQ(a.time_step(), b.time_step());
+    EXPECT_EQ(a.mass_in(), b.mass_in());
+    EXPECT_EQ(a.mass_out(), b.mass_out());
+    EXPECT_EQ(a.eroded_mass(), b.eroded_mass());
+    expect_same_fields(a.particles().fields(), b.particles().fields(), "SPH particles");
+    ASSERT_EQ(a.grains() != nullptr, b.grains() != nullptr);
+    if (a.grains()) expect_same_fields(a.grains()->grains().fields(), b.grains()->grains().fields(), "grains");
+    EXPECT_EQ(a.impacts().total(), b.impacts().total());
+    const auto va = a.output_values(), vb = b.output_values();
+    ASSERT_EQ(va.size(), vb.size());
+    for (std::size_t k = 0; k < va.size(); ++k)
+        if (!(std::isnan(va[k].value) && std::isnan(vb[k].value))) {
+            EXPECT_EQ(va[k].value, vb[k].value) << va[k].name;
+        }
+}
+
+// Straight to `end`, against to `middle` + checkpoint + a new Simulation + on to `end`. With
+// steps > 0, `middle` and `end` count steps from the primed start instead of times.
+template <int Dim>
+void check_restart(const grit::io::CaseSpec& spec, double middle, double end, bool steps) {
+    const fs::path file = scratch_file(spec.name + ".h5");
+    auto advance = [&](Simulation<Dim>& s, double target) {
+        if (!steps) return s.advance_to(target);
+        s.advance_to(0.0);
+        while (s.steps() < static_cast<long>(target)) s.step();
+    };
+    Simulation<Dim> straight(spec, grit::testing::in_memory());
+    advance(straight, middle);
+    advance(straight, end);
+    {
+        Simulation<Dim> first(spec, grit::testing::in_memory());
+        advance(first, middle);
+        first.save_checkpoint(file);
+    }
+    Simulation<Dim> second(spec, grit::testing::in_memory());
+    second.load_checkpoint(file);
+    advance(second, end);
+    expect_same_state(straight, second);
+    fs::remove(file);
+}
+
+}  // namespace
+
+TEST(Restart, EveryCaseContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto cases = all_cases();
+    ASSERT_GE(cases.size(), 10u);
+    for (const auto& path : cases) {
+        SCOPED_TRACE(path.string());
+        const auto spec = grit::io::read_case(path);
+        if (spec.dimension == 2)
+            check_restart<2>(spec, 25, 50, true);
+        else
+            check_restart<3>(spec, 15, 30, true);
+    }
+}
+
+// The demo mid-run: the jet on the copper, garnet grains in penalty contact with it and logged impacts,
+// Johnson-Cook damage and eroded particles, clamps and outlets all active at the checkpoint.
+TEST(Restart, DemoMidRunContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml", {"time.end=1.6e-5"});
+    check_restart<2>(spec, 1.1e-5, 1.6e-5, false);
+}
+
+// JH-2 rock under the jet: cracks, bulking pressure and detached fragments at the checkpoint.
+TEST(Restart, BrittleRockMidRunContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case("waterjet_sandstone_2d/case.toml", {"time.end=6e-6"});
+    check_restart<2>(spec, 4e-6, 6e-6, false);
+}
+
+// Grains in a settled bed: grain-grain contacts with tangential (friction) history across the
+// checkpoint, periodic axes, plane walls.
+TEST(Restart, SettlingGrainsWithContactHistoryContinueBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case("dem_settling_3d/case.toml", {"time.end=0.03"});
+    Simulation<3> probe(spec, grit::testing::in_memory());
+    probe.advance_to(0.02);
+    ASSERT_GT(probe.grains()->contact_history().active_pairs(), 100u) << "the bed has not formed yet";
+    check_restart<3>(spec, 0.02, 0.022, false);
+}
+
+TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
+    const fs::path file = scratch_file("foreign.h5");
+    {
+        Simulation<2> s(grit::testing::load_case("hydrostatic_2d/case.toml"), grit::testing::in_memory());
+        s.advance_to(0.0);
+        s.save_checkpoint(file);
+    }
+    Simulation<2> other(grit::testing::load_case("dambreak_2d/case.toml"), grit::testing::in_memory());
+    try {
+        other.load_checkpoint(file);
+        FAIL() << "a foreign checkpoint was accepted";
+    } catch (const grit::core::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("written by case 'hydrostatic_2d'"), std::string::npos) << e.what();
+    }
+    Simulation<2> finer(grit::testing::load_case("hydrostatic_2d/case.toml", {"numerics.particle_spacing=0.0125"}),
+                        grit::testing::in_memory());
+    try {
+        finer.load_checkpoint(file);
+        FAIL() << "a checkpoint with another spacing was accepted";
+    } catch (const grit::core::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("numerics.particle_spacing"), std::string::npos) << e.what();
+    }
+    fs::remove(file);
+}
+
+TEST(Restart, TruncatedOrMissingCheckpointIsRefused) {
+    const fs::path file = scratch_file("truncated.h5");
+    {
+        Simulation<2> s(grit::testing::load_case("hydrostatic_2d/case.toml"), grit::testing::in_memory());
+        s.advance_to(0.0);
+        s.save_checkpoint(file);
+    }
+    fs::resize_file(file, fs::file_size(file) / 2);
+    Simulation<2> s(grit::testing::load_case("hydrostatic_2d/case.toml"), grit::testing::in_memory());
+    EXPECT_THROW(s.load_checkpoint(file), grit::core::InputError);
+    EXPECT_THROW(s.load_checkpoint(scratch_file("missing.h5")), grit::core::InputError);
+    std::ofstream(scratch_file("text.h5")) << "not hdf5\n";
+    EXPECT_THROW(s.load_checkpoint(scratch_file("text.h5")), grit::core::InputError);
+    fs::remove(file);
+}
