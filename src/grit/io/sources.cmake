@@ -3,4 +3,5 @@ set(GRIT_IO_SOURCES
   io/vtu_writer.cpp
   io/pvd_writer.cpp
   io/series_writer.cpp
+  io/particle_budget.cpp
 )
