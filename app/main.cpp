@@ -2,6 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -46,16 +49,46 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     return 0;
 }
 
+/// --threads N: a positive whole number (checked here: CLI11's range check prints a 300-digit bound).
+int parse_threads(const std::string& text) {
+    int n = 0;
+    const char* end = text.data() + text.size();
+    const auto [stop, ec] = std::from_chars(text.data(), end, n);
+    if (ec != std::errc{} || stop != end || n < 1)
+        throw grit::core::InputError(fmt::format("--threads {}: must be a positive whole number", text));
+    return n;
+}
+
+/// One line for a command-line error CLI11 reports (its own message, less the "Run with --help" line).
+std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
+    if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
+        const auto extra = app.remaining();
+        if (extra.empty()) return "a command is required: run, check or materials (grit --help)";
+        if (extra.front().starts_with('-')) return fmt::format("unknown option '{}' (grit --help)", extra.front());
+        return fmt::format("unknown command '{}': the commands are run, check and materials (grit --help)",
+                           extra.front());
+    }
+    std::string message = e.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    if (message.size() > 1 && std::isupper(static_cast<unsigned char>(message[0])) &&
+        std::islower(static_cast<unsigned char>(message[1])))
+        message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
+    const auto subcommands = app.get_subcommands();
+    const std::string help = subcommands.empty() ? "grit --help" : "grit " + subcommands.front()->get_name() + " --help";
+    return fmt::format("{} ({})", message, help);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"grit: SPH-DEM simulation of erosion by fluids carrying abrasive grains"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "grit " GRIT_VERSION);
 
     std::string case_file, out;
     std::vector<std::string> sets;
     double end_time = 0.0;
-    int threads = 0;
+    std::string threads_text;
     bool quiet = false;
     std::string restart;
 
@@ -64,7 +97,7 @@ int main(int argc, char** argv) {
     run->add_option("--out", out, "output folder (default: output/<case name>)");
     run->add_option("--set", sets, "override a case value: key.path=value (repeatable)");
     auto* end_opt = run->add_option("--end-time", end_time, "simulated end time [s] (0 writes the initial state)");
-    run->add_option("--threads", threads, "number of threads")->check(CLI::PositiveNumber);
+    auto* threads_opt = run->add_option("--threads", threads_text, "number of threads")->type_name("N");
     run->add_flag("--quiet", quiet, "no progress line or final message");
     run->add_option("--restart", restart,
                     "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file");
@@ -75,12 +108,20 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("materials", "list the built-in material library");
 
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help, --version: printed as CLI11 does, exit 0
+    } catch (const CLI::ParseError& e) {
+        fmt::print(stderr, "grit: error: {}\n", usage_error(app, e));
+        return exit_input_error;
+    }
 
     try {
         if (run->parsed()) {
             if (end_opt->count() && end_time < 0.0)
                 throw grit::core::InputError(fmt::format("--end-time {}: must not be negative [s]", end_time));
+            const int threads = threads_opt->count() ? parse_threads(threads_text) : 0;
             return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart);
         }
         if (check->parsed()) {

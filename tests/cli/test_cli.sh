@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# CLI tests of grit: exit codes and one-line messages for bad input, the files of a run, VTK-readable
-# output, identical results with 1 and 2 threads, and a reported blow-up.
+# CLI tests of grit: exit codes and one-line messages for bad input and bad command lines, --version,
+# the files of a run, VTK-readable output, identical results with 1 and 2 threads, and a reported blow-up.
 #
 # Usage: bash tests/cli/test_cli.sh <path-to-grit> <repo-root> [<python3-with-vtk>]
 # Works from any current directory. Prints one line per check and a final "N passed, M failed".
@@ -115,6 +115,47 @@ expect_input_error() {
     rm -rf -- "$W/bad"
 }
 
+# expect_usage_error NAME PATTERN... -- GRIT-ARGS...: grit must exit 2 and print exactly one short stderr
+# line (under 200 characters) "grit: error: ..." containing every PATTERN, and nothing on stdout.
+expect_usage_error() {
+    local name=$1
+    shift
+    local patterns=()
+    while [[ $1 != -- ]]; do
+        patterns+=("$1")
+        shift
+    done
+    shift
+    grit "$@"
+    local err lines why=""
+    err=$(cat "$W/stderr")
+    lines=$(grep -c '' "$W/stderr" || true)
+    if [[ $RC -ne 2 ]]; then
+        why="exit code $RC, expected 2"
+    elif [[ $lines -ne 1 ]]; then
+        why="$lines lines on stderr, expected 1"
+    elif [[ $err != "grit: error: "* ]]; then
+        why="stderr does not start with 'grit: error: '"
+    elif [[ ${#err} -ge 200 ]]; then
+        why="${#err} characters on stderr, expected under 200"
+    elif [[ -s $W/stdout ]]; then
+        why="stdout not empty: $(head -c 200 "$W/stdout")"
+    else
+        local p
+        for p in "${patterns[@]}"; do
+            if ! grep -qF -- "$p" "$W/stderr"; then
+                why="'$p' missing from stderr"
+                break
+            fi
+        done
+    fi
+    if [[ -z $why ]]; then
+        pass "usage: $name -> exit 2: $err"
+    else
+        fail "usage: $name" "$why; stderr: $(head -c 400 "$W/stderr")"
+    fi
+}
+
 # --- the material library and a valid case ---------------------------------------------------------
 
 grit materials
@@ -152,6 +193,52 @@ expect_input_error "spacing larger than the geometry" "fluid[0].max" "less than 
     run "$HYDRO" --set numerics.particle_spacing=1.0
 expect_input_error "negative --end-time" "--end-time" "must not be negative" -- run "$HYDRO" --end-time -1
 expect_input_error "--set without '='" "--set 'time.end'" "key.path=value" -- run "$HYDRO" --set time.end
+
+# Too many particles: refused before anything is allocated (it used to end in std::bad_alloc, exit 1).
+DAM=$ROOT/cases/dambreak_2d/case.toml
+expect_input_error "spacing 1e-12: too many particles" "numerics.particle_spacing = 1e-12 m" "particles (~" \
+    "bytes)" "numerics.max_particles = 20000000" -- run "$DAM" --set numerics.particle_spacing=1e-12
+if grep -q 'bad_alloc' "$W/stderr"; then
+    fail "spacing 1e-12: no bad_alloc" "stderr: $(cat "$W/stderr")"
+else
+    pass "spacing 1e-12: no bad_alloc"
+fi
+expect_usage_error "check with spacing 1e-12" "numerics.particle_spacing" "numerics.max_particles" -- \
+    check "$DAM" --set numerics.particle_spacing=1e-12
+# The dam break makes 23018 particles, which its estimate matches exactly.
+expect_usage_error "numerics.max_particles below the count" "about 2.3e+04 particles" \
+    "numerics.max_particles = 23017" -- check "$DAM" --set numerics.max_particles=23017
+grit check "$DAM" --set numerics.max_particles=23018
+if [[ $RC -eq 0 ]]; then
+    pass "numerics.max_particles = 23018 (the dam break's count) passes check"
+else
+    fail "numerics.max_particles = 23018 (the dam break's count) passes check" "exit $RC: $(cat "$W/stderr")"
+fi
+expect_usage_error "numerics.max_particles = 0" "numerics.max_particles" "must lie in" -- \
+    check "$DAM" --set numerics.max_particles=0
+
+# --- command-line errors: exit 2, one short line; --help and --version exit 0 ----------------------------
+
+expect_usage_error "--threads -3" "--threads -3" "positive whole number" -- run "$HYDRO" --threads -3
+expect_usage_error "--threads abc" "--threads abc" "positive whole number" -- run "$HYDRO" --threads abc
+expect_usage_error "unknown option" "--bogus" -- run "$HYDRO" --bogus
+expect_usage_error "missing case file" "case is required" -- run
+expect_usage_error "no command" "a command is required" --
+expect_usage_error "unknown command" "frob" "unknown command" -- frob
+
+VERSION=$(sed -n 's/^project(grit VERSION \([0-9.]*\).*/\1/p' "$ROOT/CMakeLists.txt")
+grit --version
+if [[ $RC -eq 0 ]] && [[ -n $VERSION ]] && [[ $(cat "$W/stdout") == "grit $VERSION" ]]; then
+    pass "grit --version exits 0 and prints 'grit $VERSION'"
+else
+    fail "grit --version exits 0 and prints 'grit $VERSION'" "exit $RC: $(cat "$W/stdout" "$W/stderr")"
+fi
+grit --help
+if [[ $RC -eq 0 ]] && grep -q 'run' "$W/stdout" && grep -q -- '--version' "$W/stdout"; then
+    pass "grit --help exits 0 and lists the commands"
+else
+    fail "grit --help exits 0 and lists the commands" "exit $RC"
+fi
 
 # --- a zero-length run: the files it writes ----------------------------------------------------------
 

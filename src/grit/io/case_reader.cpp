@@ -7,12 +7,15 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
 
 #include "grit/core/error.hpp"
+#include "grit/core/types.hpp"
+#include "grit/io/particle_budget.hpp"
 #include "grit/material/library.hpp"
 #include "grit/sph/kernels.hpp"
 
@@ -608,6 +611,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.check_interval = numerics.integer_or("check_interval", c.check_interval, 1, 1000000);
     c.max_speed = numerics.number_or("max_speed", 0.0, non_negative("[m/s]"));
     c.artificial_stress = numerics.number_or("artificial_stress", c.artificial_stress, in_range(0.0, 1.0));
+    // Particle indices are 32-bit (grit::Index): no case can hold more.
+    c.max_particles = numerics.integer_or("max_particles", c.max_particles, 1, std::numeric_limits<Index>::max());
     const double dx = c.particle_spacing;
 
     const Section physics = top.section("physics");
@@ -809,6 +814,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
         throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]] or [[grains]]");
     report_unknown(root, "", used);
+    // Last, once everything else is valid: refuse a case too big to allocate.
+    check_particle_budget(c);
     return c;
 }
 

@@ -127,6 +127,9 @@ struct CaseSpec {
     int check_interval = 50;             ///< numerics.check_interval [steps]
     double max_speed = 0.0;              ///< numerics.max_speed [m/s]: faster is a blow-up (0 = auto)
     double artificial_stress = 0.3;      ///< numerics.artificial_stress: epsilon of Gray et al. (2001)
+    /// numerics.max_particles: a case whose estimated SPH particles plus grains exceed it is refused
+    /// before anything is allocated (20 million: ~10 GB in 2D, ~14 GB in 3D; see io/particle_budget.cpp).
+    Index max_particles = 20'000'000;
 
     std::vector<double> gravity;  ///< physics.gravity [m/s^2]
 

@@ -5,4 +5,5 @@ set(GRIT_IO_SOURCES
   io/series_writer.cpp
   io/csv_file.cpp
   io/hdf5_file.cpp
+  io/particle_budget.cpp
 )

@@ -8,6 +8,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -19,13 +20,16 @@
 #include "grit/core/types.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/case_spec.hpp"
+#include "grit/io/particle_budget.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using grit::core::InputError;
 using grit::io::CaseSpec;
+using grit::io::estimate_particles;
 using grit::io::read_case;
+using grit::io::shape_particle_bound;
 using Overrides = std::vector<std::string>;
 
 /// A small, valid 2D case: one fluid box of a case-defined material, a tank, two probes.
@@ -558,6 +562,114 @@ TEST_F(CaseReaderTest, BrittleSolidKeysAndErrors) {
                              "solid[0].material=rock"},
                       {"materials.rock.hel_pressure", "is required"});
     expect_error_file(file, {"cracks.link_distance=-0.001"}, {"cracks.link_distance", "must be positive"});
+}
+
+// ---------------------------------------------------------------------------------------------------
+// The particle budget: numerics.max_particles against the count estimated from the shapes
+
+TEST_F(CaseReaderTest, DamBreakEstimateIsItsRealCount) {
+    const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "dambreak_2d" / "case.toml";
+    const CaseSpec c = read_case(file);
+    EXPECT_EQ(c.max_particles, 20'000'000);
+    // `grit run cases/dambreak_2d/case.toml --end-time 0` makes 23018 particles (summary.json): the
+    // column 100 x 200 and the tank, 406 x 303 lattice points less the 400 x 300 inside it.
+    const double real = 23018.0;
+    const auto e = estimate_particles(c);
+    EXPECT_GE(e.sph, real);
+    EXPECT_LE(e.sph, 1.5 * real);
+    EXPECT_EQ(e.grains, 0.0);
+    EXPECT_EQ(e.inlets, 0.0);
+    EXPECT_GT(e.bytes, 100.0 * real);
+    EXPECT_LT(e.bytes, 1000.0 * real);
+}
+
+TEST_F(CaseReaderTest, MinimalCaseEstimateIsExact) {
+    // Fluid 16 x 8; tank with two layers, top open: 36 x 18 less 32 x 16 (`grit run` makes 264).
+    EXPECT_DOUBLE_EQ(estimate_particles(read_ok(minimal_2d)).total(), 128.0 + 136.0);
+}
+
+TEST_F(CaseReaderTest, ShapeBoundsLieAboveTheLatticeCounts) {
+    const double dx = 0.01;
+    grit::io::ShapeSpec box;
+    box.kind = "box";
+    box.min = {0.0, 0.0, 0.0};
+    box.max = {0.1, 0.2, 0.3};
+    EXPECT_DOUBLE_EQ(shape_particle_bound(box, 2, dx), 10.0 * 20.0);
+    EXPECT_DOUBLE_EQ(shape_particle_bound(box, 3, dx), 10.0 * 20.0 * 30.0);
+    // Discs and spheres: at least their area (volume) / dx^Dim, and not far above for a radius of 20 dx.
+    grit::io::ShapeSpec disc;
+    disc.kind = "disc";
+    disc.center = {0.0, 0.0, 0.0};
+    disc.radius = 0.2;
+    const double area = std::numbers::pi * 400.0, volume = 4.0 / 3.0 * std::numbers::pi * 8000.0;
+    EXPECT_GE(shape_particle_bound(disc, 2, dx), area);
+    EXPECT_LE(shape_particle_bound(disc, 2, dx), 1.2 * area);
+    EXPECT_GE(shape_particle_bound(disc, 3, dx), volume);
+    EXPECT_LE(shape_particle_bound(disc, 3, dx), 1.3 * volume);
+    grit::io::ShapeSpec cylinder = disc;
+    cylinder.kind = "cylinder";
+    cylinder.length = 0.5;
+    cylinder.axis = 1;
+    EXPECT_GE(shape_particle_bound(cylinder, 3, dx), area * 50.0);
+    EXPECT_LE(shape_particle_bound(cylinder, 3, dx), 1.2 * area * 50.0);
+    // A closed 3D tank, one layer: 12 x 22 x 32 lattice points less the 10 x 20 x 30 inside.
+    grit::io::ShapeSpec tank = box;
+    tank.kind = "tank";
+    tank.layers = 1;
+    EXPECT_DOUBLE_EQ(shape_particle_bound(tank, 3, dx), 12.0 * 22.0 * 32.0 - 6000.0);
+    tank.open = {"top", "front"};  // z high and y low open: 12 x 21 x 31
+    EXPECT_DOUBLE_EQ(shape_particle_bound(tank, 3, dx), 12.0 * 21.0 * 31.0 - 6000.0);
+}
+
+TEST_F(CaseReaderTest, InletEstimateCountsEveryLayerUntilTheEnd) {
+    // 8 points across (diameter 0.125 m / 0.015625 m); 2 m/s from 0.1 s to 0.5 s: 1 + 51.2 -> 52 layers.
+    const std::string inlet = "[[inlet]]\nposition = [0.4, 0.2]\ndirection = [0.0, -1.0]\ndiameter = 0.125\n"
+                              "velocity = 2.0\nstart = 0.1\nmaterial = \"my_water\"\n\n[domain]";
+    const CaseSpec c = read_ok(replaced(minimal_2d, "[domain]", inlet));
+    EXPECT_DOUBLE_EQ(estimate_particles(c).inlets, 8.0 * 52.0);
+    EXPECT_DOUBLE_EQ(estimate_particles(read_ok(replaced(minimal_2d, "[domain]", inlet), {"inlet[0].stop=0.1"})).inlets, 0.0);
+    expect_error(replaced(minimal_2d, "[domain]", inlet), {"time.end=1e6"},
+                 {"numerics.particle_spacing = 0.015625 m with inlets until time.end = 1000000 s", "numerics.max_particles"});
+}
+
+TEST_F(CaseReaderTest, TinySpacingIsRefusedNamingTheKeysAndTheCount) {
+    // 0.25 x 0.125 m at 1e-12 m: 3.1e+22 fluid particles (the tank's two layers only ~2e+12).
+    expect_error(minimal_2d, {"numerics.particle_spacing=1e-12"},
+                 {"numerics.particle_spacing = 1e-12 m would make about 3.1e+22 particles (~1.6e+25 bytes)",
+                  "numerics.max_particles = 20000000", "raise it"});
+    expect_error(minimal_2d, {"numerics.particle_spacing=1e-320"},
+                 {"numerics.particle_spacing = 1e-320 m", "more particles than a double can count", "numerics.max_particles"});
+}
+
+TEST_F(CaseReaderTest, MaxParticlesBelowTheCountIsRefused) {
+    expect_error(minimal_2d, {"numerics.max_particles=263"},
+                 {"numerics.particle_spacing = 0.015625 m", "about 2.6e+02 particles", "numerics.max_particles = 263"});
+    EXPECT_EQ(read_ok(minimal_2d, {"numerics.max_particles=264"}).max_particles, 264);
+    // A finer spacing than the default limit allows, with the limit raised.
+    const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "dambreak_2d" / "case.toml";
+    expect_error_file(file, {"numerics.particle_spacing=1e-5"}, {"numerics.particle_spacing = 1e-05 m", "numerics.max_particles"});
+    EXPECT_NO_THROW((void)read_case(file, {"numerics.particle_spacing=1e-5", "numerics.max_particles=2000000000"}));
+}
+
+TEST_F(CaseReaderTest, BadMaxParticlesIsRefusedNamingTheKey) {
+    expect_error(minimal_2d, {"numerics.max_particles=0"}, {"numerics.max_particles", "must lie in [1, 2147483647]"});
+    expect_error(minimal_2d, {"numerics.max_particles=-1"}, {"numerics.max_particles", "-1", "must lie in"});
+    expect_error(minimal_2d, {"numerics.max_particles=1.5"}, {"numerics.max_particles", "1.5", "must be an integer"});
+    expect_error(minimal_2d, {"numerics.max_particles=x"}, {"numerics.max_particles", "\"x\"", "must be an integer"});
+    expect_error(minimal_2d, {"numerics.max_particles=3000000000"}, {"numerics.max_particles", "must lie in"});
+}
+
+TEST_F(CaseReaderTest, GrainsCountTowardsTheBudget) {
+    const std::string lattice = replaced(grains_2d, "arrangement = \"single\"\nposition = [0.0, 0.01]\n",
+                                         "arrangement = \"lattice\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.01]\nspacing = 0.001\n");
+    const CaseSpec c = read_ok(lattice);
+    EXPECT_DOUBLE_EQ(estimate_particles(c).grains, 100.0);
+    expect_error(lattice, {"grains[0].spacing=1e-7"},
+                 {"grains[0].spacing = 1e-07 m would make about 1.0e+10 grains", "numerics.max_particles = 20000000"});
+    const std::string random = replaced(grains_2d, "arrangement = \"single\"\nposition = [0.0, 0.01]\n",
+                                        "arrangement = \"random\"\nmin = [0.0, 0.0]\nmax = [0.05, 0.05]\ncount = 2\n");
+    expect_error(random, {"numerics.max_particles=1"},
+                 {"grains[0].count = 2 would make about 2.0e+00 grains", "numerics.max_particles = 1"});
 }
 
 TEST_F(CaseReaderTest, DuplicateProbeName) {

@@ -1,0 +1,30 @@
+// How many particles a case would make and about how much memory they would take, from the shapes of
+// its blocks (no lattice is generated), so that a case asking for more than numerics.max_particles
+// is refused before anything is allocated.
+#pragma once
+
+#include "grit/io/case_spec.hpp"
+
+namespace grit::io {
+
+/// Particle counts of a case (doubles: a tiny spacing gives counts far beyond any integer type).
+struct ParticleEstimate {
+    double sph = 0.0;     ///< fluid, solid and wall particles plus `inlets`
+    double inlets = 0.0;  ///< every particle the inlets emit by time.end (none are taken off for outlets)
+    double grains = 0.0;  ///< DEM grains
+    double bytes = 0.0;   ///< memory of both, fields and neighbour lists (an estimate, see the .cpp)
+    double total() const { return sph + grains; }
+};
+
+/// Upper bound of the lattice points (spacing dx) that `shape` holds in `dim` dimensions: exact for
+/// boxes, a little above the count for discs, spheres, cylinders and tanks.
+double shape_particle_bound(const ShapeSpec& shape, int dim, double dx);
+
+/// The counts of `c`'s blocks, inlets and grains.
+ParticleEstimate estimate_particles(const CaseSpec& c);
+
+/// Throws core::InputError naming numerics.particle_spacing (or the grains block that makes the most)
+/// and numerics.max_particles when the estimate exceeds c.max_particles.
+void check_particle_budget(const CaseSpec& c);
+
+}  // namespace grit::io
