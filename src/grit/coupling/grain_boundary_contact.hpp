@@ -9,6 +9,7 @@
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
 #include "grit/dem/grain_set.hpp"
+#include "grit/neighbors/cross_pairs.hpp"
 #include "grit/particles/sph_particles.hpp"
 
 namespace grit::coupling {
@@ -58,7 +59,8 @@ public:
 
 private:
     PenaltyContactParameters parameters_;
-    std::vector<PenaltyContact<Dim>> contacts_;   // ordered by particle
+    neighbors::CrossPairList<Dim> pairs_;          // grains near each solid or wall particle
+    std::vector<PenaltyContact<Dim>> contacts_;   // ordered as pairs_: by particle, then grain
     std::vector<Index> grain_start_, grain_order_;  // contacts of grain g: grain_order_[grain_start_[g] ..]
 };
 

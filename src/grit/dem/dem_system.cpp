@@ -81,11 +81,12 @@ void DemSystem<Dim>::rebuild_neighbors() {
     skin_ = skin();
     const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains_.radius()[i]; });
     const double cell = 2.0 * rmax + skin_;
-    const GrainGrid<Dim> grid = GrainNeighborList<Dim>::make_grid(domain, x, n, cell);
-    GrainNeighborList<Dim>::sort_by_cell(grid, x, n, order_);
+    const auto grid = GrainNeighborList<Dim>::make_grid(domain, x, n, cell);
+    std::vector<Index> cell_start;
+    neighbors::sort_by_cell(grid, x, n, order_, cell_start);
     grains_.gather(order_);
-    list_.build(grid, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), grains_.id(), n,
-                skin_);
+    list_.build(grid, cell_start, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(),
+                grains_.id(), n, skin_);
     history_.restore(grains_.id(), list_);
     scratch_.reset(list_.entry_count());
     lists_dirty_ = false;
@@ -255,9 +256,14 @@ void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     for (std::size_t i = 0; i < rows; ++i)
         for (int k = 0; k < Dim; ++k) reference[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
     const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains_.radius()[i]; });
-    const GrainGrid<Dim> grid = GrainNeighborList<Dim>::make_grid(parameters_.domain, reference.data(), n,
-                                                                   2.0 * rmax + skin_);
-    list_.build(grid, parameters_.domain, reference.data(), std::as_const(grains_).radius(), grains_.id(), n, skin_);
+    const auto grid = GrainNeighborList<Dim>::make_grid(parameters_.domain, reference.data(), n, 2.0 * rmax + skin_);
+    std::vector<Index> cell_start;
+    neighbors::sort_by_cell(grid, reference.data(), n, order_, cell_start);
+    for (Index i = 0; i < n; ++i)
+        if (order_[static_cast<std::size_t>(i)] != i)
+            throw io::Hdf5Error(group.path() + ": the grains are not in the order of their neighbour lists");
+    list_.build(grid, cell_start, parameters_.domain, reference.data(), std::as_const(grains_).radius(), grains_.id(),
+                n, skin_);
     scratch_.reset(list_.entry_count());
 }
 

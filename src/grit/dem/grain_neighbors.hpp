@@ -10,6 +10,7 @@
 
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
+#include "grit/neighbors/cell_grid.hpp"
 
 namespace grit::dem {
 
@@ -47,56 +48,26 @@ private:
     core::Vec<Dim> inverse_length_ = core::Vec<Dim>::zero();
 };
 
-/// Cells of at least one list radius per axis; periodic axes are divided into a whole number of cells.
-template <int Dim>
-struct GrainGrid {
-    core::Vec<Dim> origin = core::Vec<Dim>::zero();
-    core::Vec<Dim> inverse_cell_size = core::Vec<Dim>::zero();
-    std::array<Index, Dim> dims{};
-    std::array<bool, Dim> periodic{};
-
-    Index cell_count() const noexcept {
-        Index n = 1;
-        for (int k = 0; k < Dim; ++k) n *= dims[k];
-        return n;
-    }
-    std::array<Index, Dim> coords(const core::Vec<Dim>& x) const noexcept {
-        std::array<Index, Dim> c{};
-        for (int k = 0; k < Dim; ++k) {
-            const auto v = static_cast<Index>(std::floor((x[k] - origin[k]) * inverse_cell_size[k]));
-            c[k] = v < 0 ? 0 : (v >= dims[k] ? dims[k] - 1 : v);
-        }
-        return c;
-    }
-    /// Cell number with x slowest: grains sorted by cell then split between threads along x, so each
-    /// thread gets its share of a settled bed (with z slowest one thread got the bed, the other the
-    /// grains falling above it).
-    Index linear(const std::array<Index, Dim>& c) const noexcept {
-        Index id = c[0];
-        for (int k = 1; k < Dim; ++k) id = id * dims[k] + c[k];
-        return id;
-    }
-};
-
 /// Full Verlet lists of grains within R_i + R_j + skin, built over grains sorted by cell.
 template <int Dim>
 class GrainNeighborList {
 public:
     using Vec = core::Vec<Dim>;
+    /// Grains are numbered by cell with x slowest (see CellOrder::x_slowest).
+    using Grid = neighbors::CellGrid<Dim, neighbors::CellOrder::x_slowest>;
 
-    /// The grid for x[0..n) (wrapped into the domain) with cells of at least `cell_size`. Throws
-    /// InputError when a periodic length is shorter than three cells, BlowUpError when grains have
-    /// spread so far that the grid would be huge.
-    static GrainGrid<Dim> make_grid(const GrainDomain<Dim>& domain, const Vec* x, Index n, double cell_size);
+    /// The grid for x[0..n) (wrapped into the domain): cells of at least `cell_size` on every axis,
+    /// periodic axes divided into a whole number of cells. Throws InputError when a periodic length is
+    /// shorter than three cells, BlowUpError when grains have spread so far that the grid would be huge.
+    /// Sort the grains with neighbors::sort_by_cell.
+    static Grid make_grid(const GrainDomain<Dim>& domain, const Vec* x, Index n, double cell_size);
 
-    /// Counting sort by cell: order[i] is the grain that goes to position i (stable, deterministic).
-    static void sort_by_cell(const GrainGrid<Dim>& grid, const Vec* x, Index n, std::vector<Index>& order);
-
-    /// Builds the lists of x[0..n), which must be sorted by the cells of `grid` and wrapped. Each row
-    /// lists first the partners with a higher id (the pairs this grain evaluates, as body a), then
-    /// those with a lower id, each part in ascending index order.
-    void build(const GrainGrid<Dim>& grid, const GrainDomain<Dim>& domain, const Vec* x, const double* radius,
-               const std::int32_t* id, Index n, double skin);
+    /// Builds the lists of x[0..n), which must be wrapped and sorted by the cells of `grid`, with
+    /// `cell_start` from neighbors::sort_by_cell. Each row lists first the partners with a higher id (the
+    /// pairs this grain evaluates, as body a), then those with a lower id, each part in ascending index
+    /// order.
+    void build(const Grid& grid, const std::vector<Index>& cell_start, const GrainDomain<Dim>& domain,
+               const Vec* x, const double* radius, const std::int32_t* id, Index n, double skin);
 
     Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
     Index end(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i) + 1]; }
@@ -122,7 +93,6 @@ private:
     std::vector<Index> indices_;
     std::vector<Index> mirror_;
     std::vector<Index> split_;
-    std::vector<Index> cell_start_;
     std::vector<Vec> reference_positions_;
     double skin_ = 0.0;
 };

@@ -1,10 +1,16 @@
-// A uniform grid of cells over the particles' bounding box, and the counting sort that orders particles
-// by cell (row-major, x fastest) so that each cell's particles are contiguous in memory.
+// A uniform grid of cells, one type for SPH particles and DEM grains, and the counting sort that orders
+// points by cell so that each cell's points are contiguous in memory.
+//
+// Two ways to lay a grid: covering() puts cubic cells over the points' bounding box (SPH particles,
+// crack links, grains seen from the SPH side); over_box() divides each periodic axis of a box into a
+// whole number of cells and covers the points along the open axes (DEM grains). The cell numbering is a
+// template parameter (CellOrder), fixed by what each user does with the sorted order.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "grit/core/error.hpp"
@@ -14,61 +20,148 @@
 
 namespace grit::neighbors {
 
-template <int Dim>
+/// How cell coordinates c[0..Dim) become one cell number.
+enum class CellOrder {
+    /// Row-major with x fastest: c[0] + dims[0] * (c[1] + dims[1] * c[2]). The three cells x-1..x+1 of
+    /// one row are one contiguous range of sorted points, which the SPH neighbour scan reads in one go.
+    x_fastest,
+    /// x slowest: c[Dim-1] + dims[Dim-1] * (c[Dim-2] + ...). Grains sorted by cell are split between
+    /// threads statically along the sorted order, so along x each thread gets its share of a settled
+    /// bed (with z slowest one thread got the bed, the other the grains falling above it).
+    x_slowest,
+};
+
+template <int Dim, CellOrder Order = CellOrder::x_fastest>
 struct CellGrid {
     using Vec = core::Vec<Dim>;
-    Vec origin = Vec::zero();
-    double cell_size = 1.0;
-    std::array<Index, Dim> dims{};
+    using Coords = std::array<Index, Dim>;
 
-    Index cell_count() const {
+    Vec origin = Vec::zero();
+    Vec cell_size = Vec::filled(1.0);          ///< per axis [m]
+    Vec inverse_cell_size = Vec::filled(1.0);  ///< cells per metre, per axis
+    std::array<Index, Dim> dims{};
+    std::array<bool, Dim> periodic{};  ///< axes that wrap (whole cells from origin over the box's length)
+    /// How coords() turns a distance from the origin into cells: covering() grids divide by cell_size,
+    /// over_box() grids multiply by inverse_cell_size. The two forms round differently right at a cell
+    /// boundary; each is the arithmetic of the grid it replaced, so points keep their cells bit for bit.
+    bool divides = true;
+
+    Index cell_count() const noexcept {
         Index n = 1;
         for (int k = 0; k < Dim; ++k) n *= dims[k];
         return n;
     }
-    std::array<Index, Dim> coords(const Vec& x) const noexcept {
-        std::array<Index, Dim> c{};
+    /// The cell coordinates of x, clamped to the grid (points outside it go to the nearest edge cell).
+    Coords coords(const Vec& x) const noexcept {
+        Coords c{};
         for (int k = 0; k < Dim; ++k) {
-            const auto v = static_cast<Index>(std::floor((x[k] - origin[k]) / cell_size));
-            c[k] = std::clamp<Index>(v, 0, dims[k] - 1);
+            const double d = x[k] - origin[k];
+            const auto v = static_cast<Index>(std::floor(divides ? d / cell_size[k] : d * inverse_cell_size[k]));
+            c[k] = v < 0 ? 0 : (v >= dims[k] ? dims[k] - 1 : v);
         }
         return c;
     }
-    Index linear(const std::array<Index, Dim>& c) const noexcept {
-        Index id = c[Dim - 1];
-        for (int k = Dim - 2; k >= 0; --k) id = id * dims[k] + c[k];
-        return id;
+    Index linear(const Coords& c) const noexcept {
+        if constexpr (Order == CellOrder::x_fastest) {
+            Index id = c[Dim - 1];
+            for (int k = Dim - 2; k >= 0; --k) id = id * dims[k] + c[k];
+            return id;
+        } else {
+            Index id = c[0];
+            for (int k = 1; k < Dim; ++k) id = id * dims[k] + c[k];
+            return id;
+        }
     }
     Index cell_of(const Vec& x) const noexcept { return linear(coords(x)); }
 
-    /// A grid with cells of at least `cell_size` covering points x[0..n).
+    /// Calls f(cell) for the 3^Dim cells around coordinates c (x fastest, then y, then z): periodic axes
+    /// wrap (they have at least three cells, so no cell comes twice), open axes stop at the grid's edge.
+    template <class F>
+    void for_each_cell_around(const Coords& c, F&& f) const {
+        Coords lo{}, hi{};
+        for (int k = 0; k < Dim; ++k) {
+            lo[k] = periodic[k] ? c[k] - 1 : std::max<Index>(c[k] - 1, 0);
+            hi[k] = periodic[k] ? c[k] + 1 : std::min<Index>(c[k] + 1, dims[k] - 1);
+        }
+        Coords nc{};
+        auto visit = [&]() {
+            Coords w = nc;
+            for (int k = 0; k < Dim; ++k) w[k] = (w[k] + dims[k]) % dims[k];
+            f(linear(w));
+        };
+        if constexpr (Dim == 2) {
+            for (nc[1] = lo[1]; nc[1] <= hi[1]; ++nc[1])
+                for (nc[0] = lo[0]; nc[0] <= hi[0]; ++nc[0]) visit();
+        } else {
+            for (nc[2] = lo[2]; nc[2] <= hi[2]; ++nc[2])
+                for (nc[1] = lo[1]; nc[1] <= hi[1]; ++nc[1])
+                    for (nc[0] = lo[0]; nc[0] <= hi[0]; ++nc[0]) visit();
+        }
+    }
+
+    /// Cubic cells of `cell_size` covering points x[0..n), no periodic axes. Throws BlowUpError when the
+    /// points have spread so far that the grid would be huge.
     static CellGrid covering(const Vec* x, Index n, double cell_size) {
         CellGrid g;
-        g.cell_size = cell_size;
-        Vec lo = Vec::filled(0.0), hi = Vec::filled(0.0);
-        for (int k = 0; k < Dim; ++k) {
-            lo[k] = parallel::min(n, 0.0 + 1e300, [&](Index i) { return x[i][k]; });
-            hi[k] = parallel::max(n, -1e300, [&](Index i) { return x[i][k]; });
-            if (n == 0) lo[k] = hi[k] = 0.0;
-        }
+        double cells = 1.0;
+        for (int k = 0; k < Dim; ++k) g.cover_axis(k, x, n, cell_size, cells);
+        return g;
+    }
+
+    /// A grid over the box [lower, upper) whose `periodic` axes are divided into a whole number of cells
+    /// of at least `cell_size` (from lower), and whose other axes cover points x[0..n) with cells of
+    /// `cell_size`. Points are expected inside the box along the periodic axes. Throws InputError when a
+    /// periodic axis is shorter than three cells, BlowUpError when the points have spread so far that the
+    /// grid would be huge.
+    static CellGrid over_box(const std::array<bool, Dim>& periodic, const Vec& lower, const Vec& upper,
+                             const Vec* x, Index n, double cell_size) {
+        CellGrid g;
+        g.divides = false;
+        g.periodic = periodic;
         double cells = 1.0;
         for (int k = 0; k < Dim; ++k) {
-            g.origin[k] = lo[k] - 1e-9 * cell_size;
-            const double extent = (hi[k] - lo[k]) / cell_size + 1.0;
-            cells *= extent;
-            if (!std::isfinite(extent) || cells > 64.0 * (n + 1000.0))
-                throw core::BlowUpError("particles spread over a region far larger than the case's: "
-                                        "the neighbour grid would need too many cells");
-            g.dims[k] = static_cast<Index>(extent) + 1;
+            if (!periodic[k]) {
+                g.cover_axis(k, x, n, cell_size, cells);
+                continue;
+            }
+            const double length = upper[k] - lower[k];
+            const auto count = static_cast<Index>(std::floor(length / cell_size));
+            if (count < 3)
+                throw core::InputError("periodic axis " + std::to_string(k) + " is " + std::to_string(length) +
+                                       " m long, less than three neighbour cells of " + std::to_string(cell_size) +
+                                       " m");
+            g.origin[k] = lower[k];
+            g.dims[k] = count;
+            g.cell_size[k] = length / count;
+            g.inverse_cell_size[k] = count / length;
+            cells *= count;
         }
         return g;
     }
+
+private:
+    // Axis k covers x[0..n) with cells of `cell_size` (from just below the lowest point); `cells` is the
+    // running product of the axes' extents, checked against the point count.
+    void cover_axis(int k, const Vec* x, Index n, double size, double& cells) {
+        double lo = parallel::min(n, 1e300, [&](Index i) { return x[i][k]; });
+        double hi = parallel::max(n, -1e300, [&](Index i) { return x[i][k]; });
+        if (n == 0) lo = hi = 0.0;
+        origin[k] = lo - 1e-9 * size;
+        cell_size[k] = size;
+        inverse_cell_size[k] = 1.0 / size;
+        const double extent = (hi - lo) / size + 1.0;
+        cells *= extent;
+        if (!std::isfinite(extent) || cells > 64.0 * (n + 1000.0))
+            throw core::BlowUpError("particles spread over a region far larger than the case's: "
+                                    "a neighbour grid would need too many cells");
+        dims[k] = static_cast<Index>(extent) + 1;
+    }
 };
 
-/// Counting sort by cell: `order` lists particle indices cell by cell (stable, so deterministic), and
+/// Counting sort by cell: `order` lists point indices cell by cell (stable, so deterministic), and
 /// `cell_start[c] .. cell_start[c + 1]` is the range of cell c in `order`.
-template <int Dim>
-void sort_by_cell(const CellGrid<Dim>& grid, const core::Vec<Dim>* x, Index n, std::vector<Index>& order,
+template <int Dim, CellOrder Order>
+void sort_by_cell(const CellGrid<Dim, Order>& grid, const core::Vec<Dim>* x, Index n, std::vector<Index>& order,
                   std::vector<Index>& cell_start) {
     const Index cells = grid.cell_count();
     std::vector<Index> cell(static_cast<std::size_t>(n));

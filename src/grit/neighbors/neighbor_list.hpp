@@ -16,8 +16,8 @@ class NeighborList {
 public:
     using Vec = core::Vec<Dim>;
 
-    /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (cell_start from
-    /// sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin).
+    /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (a covering() grid:
+    /// x fastest, no periodic axes; cell_start from sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin).
     /// With `phase`, pairs of two fixed wall particles are left out: nothing between them is computed.
     void build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index n,
                double radius, const std::int32_t* phase = nullptr);

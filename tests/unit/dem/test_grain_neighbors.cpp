@@ -33,14 +33,14 @@ void check_against_brute_force(bool periodic) {
     }
     const double skin = 0.0003;
     const auto grid = GrainNeighborList<Dim>::make_grid(domain, x.data(), n, 0.002 + skin);
-    std::vector<Index> order;
-    GrainNeighborList<Dim>::sort_by_cell(grid, x.data(), n, order);
+    std::vector<Index> order, cell_start;
+    grit::neighbors::sort_by_cell(grid, x.data(), n, order, cell_start);
     std::vector<grit::core::Vec<Dim>> xs(n);
     std::vector<double> rs(n);
     std::vector<std::int32_t> ids(n);
     for (Index i = 0; i < n; ++i) xs[i] = x[order[i]], rs[i] = r[order[i]], ids[i] = order[i];
     GrainNeighborList<Dim> list;
-    list.build(grid, domain, xs.data(), rs.data(), ids.data(), n, skin);
+    list.build(grid, cell_start, domain, xs.data(), rs.data(), ids.data(), n, skin);
     std::size_t entries = 0;
     for (Index i = 0; i < n; ++i) {
         std::vector<Index> expected;

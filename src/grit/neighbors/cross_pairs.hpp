@@ -1,0 +1,93 @@
+// Pairs between two sets: for each point a of a set A (SPH particles, filtered by a predicate such as
+// their phase), the bodies b of a set B (grains, with radii) whose centres are closer than
+// radius[b] + reach, in compressed rows in ascending b. B is binned on a CellGrid with cells of
+// (largest radius + reach); space is open (no periodic images). Two passes over A (count, then fill),
+// each parallel over points and writing only to its point's row: the list does not depend on the thread
+// count.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "grit/core/types.hpp"
+#include "grit/core/vec.hpp"
+#include "grit/neighbors/cell_grid.hpp"
+#include "grit/parallel/parallel.hpp"
+
+namespace grit::neighbors {
+
+template <int Dim>
+class CrossPairList {
+public:
+    using Vec = core::Vec<Dim>;
+
+    /// Lists, for each a in [0, na) with keep(a), the b in [0, nb) with |xa[a] - xb[b]| < radius[b] +
+    /// reach, in ascending b; points with !keep(a) get empty rows. Points outside the box of B grown by
+    /// (largest radius + reach) are skipped without a look at the grid.
+    template <class Keep>
+    void build(const Vec* xa, Index na, Keep&& keep, const Vec* xb, const double* radius, Index nb, double reach) {
+        offsets_.assign(static_cast<std::size_t>(na) + 1, 0);
+        indices_.clear();
+        if (na == 0 || nb == 0) return;
+
+        const double largest = parallel::max(nb, 0.0, [&](Index b) { return radius[b]; });
+        const double cell = largest + reach;  // no pair is more than one cell apart along an axis
+        const auto grid = CellGrid<Dim>::covering(xb, nb, cell);
+        sort_by_cell(grid, xb, nb, order_, cell_start_);
+        Vec lo = Vec::zero(), hi = Vec::zero();
+        for (int k = 0; k < Dim; ++k) {
+            lo[k] = parallel::min(nb, 1e300, [&](Index b) { return xb[b][k]; }) - cell;
+            hi[k] = parallel::max(nb, -1e300, [&](Index b) { return xb[b][k]; }) + cell;
+        }
+        auto candidate = [&](Index a) {
+            if (!keep(a)) return false;
+            for (int k = 0; k < Dim; ++k)
+                if (xa[a][k] < lo[k] || xa[a][k] > hi[k]) return false;
+            return true;
+        };
+        // Calls visit(b) for every b within reach of point a, in the order of the cells.
+        auto scan = [&](Index a, auto&& visit) {
+            grid.for_each_cell_around(grid.coords(xa[a]), [&](Index c) {
+                for (Index s = cell_start_[static_cast<std::size_t>(c)]; s < cell_start_[static_cast<std::size_t>(c) + 1];
+                     ++s) {
+                    const Index b = order_[static_cast<std::size_t>(s)];
+                    const double r = radius[b] + reach;
+                    if (core::norm2(xa[a] - xb[b]) < r * r) visit(b);
+                }
+            });
+        };
+
+        parallel::for_each(na, [&](Index a) {
+            if (!candidate(a)) return;
+            Index count = 0;
+            scan(a, [&](Index) { ++count; });
+            offsets_[static_cast<std::size_t>(a) + 1] = count;
+        });
+        for (Index a = 0; a < na; ++a) offsets_[static_cast<std::size_t>(a) + 1] += offsets_[static_cast<std::size_t>(a)];
+        indices_.resize(static_cast<std::size_t>(offsets_.back()));
+        if (indices_.empty()) return;
+        parallel::for_each(na, [&](Index a) {
+            const auto first = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(a)]);
+            const auto last = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(a) + 1]);
+            if (first == last) return;
+            std::size_t k = first;
+            scan(a, [&](Index b) { indices_[k++] = b; });
+            std::sort(indices_.begin() + static_cast<std::ptrdiff_t>(first),
+                      indices_.begin() + static_cast<std::ptrdiff_t>(last));
+        });
+    }
+
+    /// The bodies of point a: indices()[begin(a) .. end(a)).
+    Index begin(Index a) const noexcept { return offsets_[static_cast<std::size_t>(a)]; }
+    Index end(Index a) const noexcept { return offsets_[static_cast<std::size_t>(a) + 1]; }
+    const Index* indices() const noexcept { return indices_.data(); }
+    Index point_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
+    std::size_t pair_count() const noexcept { return indices_.size(); }
+
+private:
+    std::vector<Index> offsets_{0};
+    std::vector<Index> indices_;
+    std::vector<Index> order_, cell_start_;  // B by cell (grid work arrays, kept between builds)
+};
+
+}  // namespace grit::neighbors
