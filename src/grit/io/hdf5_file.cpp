@@ -11,11 +11,12 @@ namespace grit::io {
 
 namespace {
 
-// HDF5 prints its error stack to stderr by default; grit reports its own one-line errors instead.
-struct SilenceHdf5 {
-    SilenceHdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
-};
-const SilenceHdf5 silence_hdf5;
+// HDF5 prints its error stack to stderr by default; grit reports its own one-line errors instead. Done
+// on first use, so programs that never open an HDF5 file do not start the library.
+void silence_hdf5() {
+    static const bool silenced = H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0;
+    (void)silenced;
+}
 
 hid_t check(hid_t id, const std::string& what) {
     if (id < 0) throw Hdf5Error(what);
@@ -190,12 +191,14 @@ std::vector<std::int64_t> Hdf5Group::read_int64(const std::string& dataset, std:
 }
 
 Hdf5File Hdf5File::create(const std::filesystem::path& file) {
+    silence_hdf5();
     const hid_t f = check(H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                           "cannot create " + file.string());
     return Hdf5File(f, file.string() + ":");
 }
 
 Hdf5File Hdf5File::open(const std::filesystem::path& file) {
+    silence_hdf5();
     if (!std::filesystem::is_regular_file(file)) throw Hdf5Error(file.string() + " does not exist");
     if (H5Fis_hdf5(file.c_str()) <= 0)
         throw Hdf5Error(file.string() + " is not a readable HDF5 file (truncated or of another kind)");

@@ -134,7 +134,7 @@ void Field<T>::load(const io::Hdf5Group& group, Index size) {
         throw io::Hdf5Error(group.path() + "/" + name() + ": " + std::to_string(rows) + " rows, expected " +
                             std::to_string(size));
     values_.resize(rows);
-    std::memcpy(static_cast<void*>(values_.data()), raw.data(), raw.size() * sizeof(Scalar));
+    if (!raw.empty()) std::memcpy(static_cast<void*>(values_.data()), raw.data(), raw.size() * sizeof(Scalar));
 }
 
 /// All fields of one particle set. Fields are created by the models that need them.
