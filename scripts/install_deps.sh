@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libfmt-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   libhdf5-dev hdf5-tools
-  python3 python3-numpy python3-matplotlib python3-vtk9 python3-h5py
+  python3 python3-numpy python3-matplotlib python3-vtk9
 )
 
 missing=()
