@@ -35,7 +35,8 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         // A restart continues the files of the run the checkpoint belongs to (its folder holds checkpoints/).
         options.restart = restart;
         const auto checkpoint = grit::sim::resolve_checkpoint(restart);
-        const auto folder = checkpoint.parent_path().parent_path();
+        const auto parent = checkpoint.parent_path();
+        const auto folder = parent.filename() == "checkpoints" ? parent.parent_path() : parent;
         if (!out.empty() && !std::filesystem::equivalent(std::filesystem::path(out), folder))
             throw grit::core::InputError(fmt::format("--out {}: a restart continues the run in {}; leave --out out",
                                                      out, folder.string()));
