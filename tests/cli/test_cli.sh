@@ -461,7 +461,10 @@ else
     fail "summary.json: restarted_from is null for a fresh run"
 fi
 if command -v h5dump >/dev/null 2>&1; then
-    if h5dump -A "${ckpts[-1]}" 2>/dev/null | grep -q 'case_text'; then
+    # Capture first: with pipefail, grep -q closing the pipe early would
+    # fail the pipeline through h5dump's SIGPIPE.
+    ckpt_attrs=$(h5dump -A "${ckpts[-1]}" 2>/dev/null || true)
+    if grep -q 'case_text' <<<"$ckpt_attrs"; then
         pass "checkpoint is readable by h5dump (case_text attribute)"
     else
         fail "checkpoint is readable by h5dump (case_text attribute)"
