@@ -791,6 +791,13 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.dem.solid_friction = d.number_or("solid_friction", -1.0, non_negative("[-]"));
     }
     c.dem.periodic.resize(static_cast<std::size_t>(dim), false);
+    if (top.has("coupling")) {
+        const Section k = top.section("coupling");
+        c.coupling.enabled = k.flag_or("enabled", true);
+        c.coupling.radius = k.number_or("radius", c.coupling.radius, in_range(0.5, 20.0));
+        c.coupling.drag = k.choice("drag", c.coupling.drag, {"gidaspow", "di_felice", "single_particle"});
+        c.coupling.min_porosity = k.number_or("min_porosity", c.coupling.min_porosity, in_range(0.01, 0.9));
+    }
     for (const auto& name : grain_materials.keys()) {
         bool in_use = false;
         for (const auto& m : c.grain_materials) in_use |= m.name == name;

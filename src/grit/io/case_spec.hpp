@@ -103,6 +103,15 @@ struct DemSpec {
     double solid_friction = -1.0;       ///< mu grain-SPH solid/wall; < 0: the grain material's
 };
 
+/// [coupling]: the unresolved fluid-grain coupling (first paper section 2.5), on in every case with
+/// grains and a fluid.
+struct CouplingSpec {
+    bool enabled = true;               ///< coupling.enabled
+    double radius = 2.0;               ///< coupling.radius: R_c in grain diameters (R_c = 2 h_c)
+    std::string drag = "gidaspow";     ///< coupling.drag: "gidaspow", "di_felice", "single_particle"
+    double min_porosity = 0.2;         ///< coupling.min_porosity: floor of the fluid particles' eps
+};
+
 struct CaseSpec {
     std::filesystem::path source;  ///< the case file
     std::string name;              ///< output base name
@@ -156,6 +165,7 @@ struct CaseSpec {
     std::vector<GrainBlockSpec> grains;
     std::vector<GrainWallSpec> grain_walls;
     DemSpec dem;
+    CouplingSpec coupling;
     bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
 };
 

@@ -36,8 +36,9 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
     auto& ps = state_.particles;
     pipeline.add(Hook::begin_step, "integrate_predict", [this] { integrate_predict(); });
     pipeline.add(Hook::neighbors, "neighbors", [this] { update_neighbors(false); });
-    pipeline.add(Hook::pressure, "equation_of_state",
-                 [this, &ps] { sph::update_pressure(ps, setup_.spec.materials, Phase::fluid); }, true);
+    pipeline.add(Hook::pressure, "equation_of_state", [this, &ps] {
+        sph::update_pressure(ps, setup_.spec.materials, Phase::fluid, nullptr, porosity());
+    }, true);
     pipeline.add(Hook::pre_force, "wall_pressure", [this, &ps] {
         boundary::update_wall_pressure(ps, state_.neighbors.list(), setup_.kernel, fluid_.gravity,
                                        setup_.spec.materials);
@@ -47,9 +48,16 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
         workspace_generation_ = ps.generation();
     }, true);
     pipeline.add(Hook::force, "sph_fluid", [this, &ps] {
-        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace());
+        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace(), porosity());
     }, true);
     pipeline.add(Hook::integrate, "integrate_update", [this] { integrate_update(); });
+}
+
+template <int Dim>
+const double* SphModule<Dim>::porosity() const {
+    // The coupling module's field: the fluid's porosity when grains are coupled to it.
+    const auto& fields = state_.particles.fields();
+    return fields.has("porosity") ? fields.template get<double>("porosity").data() : nullptr;
 }
 
 template <int Dim>

@@ -29,6 +29,8 @@ private:
     void integrate_predict();
     void integrate_update();
     void update_neighbors(bool force);
+    /// The fluid particles' porosity when grains are coupled to the fluid, else nullptr.
+    const double* porosity() const;
 
     sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;

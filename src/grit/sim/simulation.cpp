@@ -17,6 +17,7 @@
 #include "grit/io/vtu_writer.hpp"
 #include "grit/modules/analyses.hpp"
 #include "grit/modules/grain_contact.hpp"
+#include "grit/modules/coupling.hpp"
 #include "grit/modules/grains.hpp"
 #include "grit/modules/open_boundaries.hpp"
 #include "grit/modules/sph_fluid.hpp"
@@ -29,6 +30,12 @@
 namespace grit::sim {
 
 namespace {
+
+/// True when the case has a fluid material (the coupling needs one).
+bool has_fluid(const io::CaseSpec& spec) {
+    return std::any_of(spec.materials.begin(), spec.materials.end(),
+                       [](const material::Material& m) { return m.phase == Phase::fluid; });
+}
 
 using core::to_vec;
 
@@ -179,8 +186,13 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
                 phase_name(state_.particles.phase()[i]), fmt::join(std::vector<double>(x[i].c, x[i].c + Dim), ", ")));
 
     if (!spec_.grains.empty()) {
+        // The grains module builds the grains the others register fields on; its step runs after
+        // theirs (contact and coupling forces first, then the grains' kick).
+        auto grains = std::make_unique<modules::GrainsModule<Dim>>(state_, setup_);
         if (has_sph_) modules_.push_back(std::make_unique<modules::GrainContactModule<Dim>>(state_, setup_));
-        modules_.push_back(std::make_unique<modules::GrainsModule<Dim>>(state_, setup_));
+        if (has_sph_ && spec_.coupling.enabled && has_fluid(spec_))
+            modules_.push_back(std::make_unique<modules::CouplingModule<Dim>>(state_, setup_));
+        modules_.push_back(std::move(grains));
     }
     if (!spec_.probes.empty()) {
         auto m = std::make_unique<modules::ProbesModule<Dim>>(state_, setup_);

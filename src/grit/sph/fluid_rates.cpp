@@ -12,9 +12,11 @@ namespace grit::sph {
 
 namespace {
 
-template <int Dim, class K>
+// Porous: the fluid is coupled to grains; `density` holds rho_bar = eps rho (eq. 21) and the density
+// diffusion acts on rho = rho_bar / eps, the density the pressure follows.
+template <int Dim, class K, bool Porous>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work) {
+                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work, const double* porosity) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
@@ -43,6 +45,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const Vec xa = x[a];
         const Vec va = v[a];
         const double rho_a = rho[a];
+        const double rho_a_true = Porous ? rho_a / porosity[a] : rho_a;
         const double p_term_a = p_term[a];
         const double inv_rho_a = 1.0 / rho_a;
         const PairCoefficients& ca = coef[mat[a]];
@@ -87,12 +90,14 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             // Density diffusion between fluid particles only, less its hydrostatic part.
             const double fluid_b = phase[b] == fluid ? 1.0 : 0.0;
             const double hydrostatic = hydrostatic_scale * core::dot(g, xab);  // rho^H_a - rho^H_b
-            diffusion += fluid_b * volume_b * ((rho_a - rho[b]) - hydrostatic) * r2 * f * inv_r2;
+            const double rho_b_true = Porous ? rho[b] / porosity[b] : rho[b];
+            diffusion += fluid_b * volume_b * ((rho_a_true - rho_b_true) - hydrostatic) * r2 * f * inv_r2;
         }
         Vec total = g;
         for (int d = 0; d < Dim; ++d) total[d] += dv[d];
         acc[a] = total;
-        drho[a] = rho_a * continuity + diffusion_scale * diffusion;
+        // With grains, d(rho_bar)/dt takes eps_a times the diffusion of rho.
+        drho[a] = rho_a * continuity + (Porous ? porosity[a] : 1.0) * diffusion_scale * diffusion;
     });
 }
 
@@ -118,15 +123,26 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, SphWorkspace&
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const SphWorkspace& workspace) {
-    std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters, workspace); }, kernel);
+                         const SphWorkspace& workspace, const double* porosity) {
+    std::visit(
+        [&](const auto& k) {
+            if (porosity)
+                fluid_rates_loop<Dim, std::decay_t<decltype(k)>, true>(particles, neighbors, k, parameters, workspace,
+                                                                         porosity);
+            else
+                fluid_rates_loop<Dim, std::decay_t<decltype(k)>, false>(particles, neighbors, k, parameters, workspace,
+                                                                          nullptr);
+        },
+        kernel);
 }
 
 template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
 template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                     const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&);
+                                     const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&,
+                                     const double*);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                     const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&);
+                                     const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&,
+                                     const double*);
 
 }  // namespace grit::sph

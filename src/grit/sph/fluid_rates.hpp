@@ -38,17 +38,19 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, SphWor
 /// later, solid particles). Gather form: each particle writes only its own rates.
 ///
 /// The densities read are the locally averaged densities rho_bar = porosity * rho of eq. (22); without
-/// grains the porosity is 1 and rho_bar is the particle density.
+/// grains (`porosity` null) the porosity is 1 and rho_bar is the particle density.
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const SphWorkspace& workspace);
+                         const SphWorkspace& workspace, const double* porosity = nullptr);
 
 extern template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
 extern template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
-                                            const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&);
+                                            const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&,
+                                            const double*);
 extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
-                                            const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&);
+                                            const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&,
+                                            const double*);
 
 }  // namespace grit::sph

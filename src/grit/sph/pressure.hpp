@@ -10,10 +10,11 @@
 namespace grit::sph {
 
 /// p_a = max(EOS(rho_a, e_a), p_min) for every particle of the given phase; e_a = 0 without
-/// `specific_energy` (barotropic).
+/// `specific_energy` (barotropic). With `porosity` (fluid coupled to grains) the particle density is the
+/// locally averaged rho_bar and the EOS takes rho = rho_bar / eps (first paper eq. 21).
 template <int Dim>
 void update_pressure(particles::SphParticles<Dim>& ps, const std::vector<material::Material>& materials,
-                     Phase phase, const double* specific_energy = nullptr) {
+                     Phase phase, const double* specific_energy = nullptr, const double* porosity = nullptr) {
     const double* rho = ps.density();
     double* p = ps.pressure();
     const std::int32_t* mat = ps.material();
@@ -26,7 +27,8 @@ void update_pressure(particles::SphParticles<Dim>& ps, const std::vector<materia
             [&](const auto& eos) {
                 parallel::for_each(ps.size(), [&](Index i) {
                     if (ph[i] != want || mat[i] != id) return;
-                    const double value = eos.pressure(rho[i], specific_energy ? specific_energy[i] : 0.0);
+                    const double r = porosity ? rho[i] / porosity[i] : rho[i];
+                    const double value = eos.pressure(r, specific_energy ? specific_energy[i] : 0.0);
                     p[i] = value < floor ? floor : value;
                 });
             },

@@ -31,12 +31,14 @@ void ImpactLog::flush() {
 void ImpactLog::save(io::Hdf5Group& group) {
     flush();
     group.write("impacts", static_cast<std::int64_t>(total()));
+    group.write("first_speed", first_speed_);
 }
 
 void ImpactLog::load(const io::Hdf5Group& group) {
     records_.clear();
     written_ = 0;
     earlier_ = static_cast<std::size_t>(group.read_int("impacts"));
+    first_speed_ = group.read_double("first_speed");
 }
 
 }  // namespace grit::wear

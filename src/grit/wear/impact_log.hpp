@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,12 @@ struct ImpactRecord {
 
 class ImpactLog {
 public:
-    void add(ImpactRecord r) { records_.push_back(std::move(r)); }
+    void add(ImpactRecord r) {
+        if (total() == 0) first_speed_ = r.speed;
+        records_.push_back(std::move(r));
+    }
+    /// Speed of the run's first impact [m/s] (the contact velocity of a single grain); NaN before it.
+    double first_speed() const noexcept { return first_speed_; }
     /// The records of this run since it started or was restarted (earlier ones are in impacts.csv).
     const std::vector<ImpactRecord>& records() const noexcept { return records_; }
     /// Every impact of the run, restarts included.
@@ -45,6 +51,7 @@ private:
     std::vector<ImpactRecord> records_;
     std::size_t written_ = 0;  ///< records_ already in the file
     std::size_t earlier_ = 0;  ///< impacts before the restart this run continues
+    double first_speed_ = std::numeric_limits<double>::quiet_NaN();
     std::ofstream file_;
 };
 

@@ -1,0 +1,176 @@
+// The fluid-grain coupling module: porosity stage, force exchange stage, outputs.
+#include "grit/modules/coupling.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "grit/core/error.hpp"
+#include "grit/parallel/parallel.hpp"
+
+namespace grit::modules {
+
+template <int Dim>
+CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup), gravity_(core::to_vec<Dim>(setup.spec.gravity)) {
+    const auto& spec = setup.spec;
+    const material::Material* fluid = nullptr;
+    for (const auto& m : spec.materials) {
+        if (m.phase != Phase::fluid) continue;
+        if (fluid)
+            throw core::InputError(fmt::format(
+                "[coupling]: the grains are coupled to one fluid material, and the case has two ('{}', '{}')",
+                fluid->name, m.name));
+        fluid = &m;
+    }
+    if (!fluid) throw core::InputError("[coupling]: the case has grains and SPH particles but no fluid material");
+    if (!(fluid->dynamic_viscosity > 0.0))
+        throw core::InputError(fmt::format("key 'materials.{}.dynamic_viscosity' = {}: the drag laws need a fluid "
+                                           "viscosity > 0 [Pa s]",
+                                           fluid->name, fluid->dynamic_viscosity));
+    coupling::CouplingParameters p;
+    p.radius_factor = spec.coupling.radius;
+    p.drag = coupling::make_drag_law(spec.coupling.drag);
+    p.min_porosity = spec.coupling.min_porosity;
+    p.fluid_density = fluid->reference_density();
+    p.viscosity = fluid->dynamic_viscosity;
+    coupling_ = coupling::FluidGrainCoupling<Dim>(p, setup.kernel);
+
+    // A grain whose volume exceeds its kernel's reach drives the porosity at its centre below zero
+    // (V_i W(0, h_c) > 1): the floor then hides it and the pressure of eq. (21) runs away. In 2D with the
+    // cubic spline V W(0) = 10 / (7 k^2) for R_c = k d, 1.43 at k = 1.
+    const auto& grains = state.grains->grains();
+    double worst = 0.0;
+    for (Index i = 0; i < grains.size(); ++i) {
+        const double r = grains.radius()[i];
+        const double h = 0.5 * p.radius_factor * 2.0 * r;
+        const double w0 = std::visit([&](const auto& k) { return std::decay_t<decltype(k)>(h).value(0.0); }, setup.kernel);
+        worst = std::max(worst, coupling::grain_volume<Dim>(r) * w0);
+    }
+    if (worst >= 1.0 - p.min_porosity)
+        throw core::InputError(fmt::format(
+            "key 'coupling.radius' = {}: too small for the grains: a grain's volume times the coupling kernel "
+            "at its centre is {:.3g}, so the porosity there would fall below coupling.min_porosity = {} "
+            "(use a radius of at least {:.2g} grain diameters)",
+            p.radius_factor, worst, p.min_porosity,
+            p.radius_factor * std::pow(worst / (1.0 - p.min_porosity), 1.0 / Dim) * 1.01));
+
+    // 0 marks a particle the coupling has not seen yet (update_porosity gives it its porosity).
+    state.particles.fields().template add<double>("porosity", 0.0, true);
+    auto& grain_fields = state.grains->grains().fields();
+    grain_fields.template add<core::Vec<Dim>>("fluid_force", core::Vec<Dim>::zero(), true);
+    grain_fields.template add<core::Vec<Dim>>("drag_force", core::Vec<Dim>::zero(), true);
+}
+
+template <int Dim>
+void CouplingModule<Dim>::install(sim::Pipeline& pipeline) {
+    // After the SPH lists (the particles are in their final order for the step) and before the
+    // equation of state, which reads rho = rho_bar / eps.
+    pipeline.add(sim::Hook::neighbors, "porosity", [this] { update_porosity(); }, true);
+    // After the SPH sums (theta_a) and before the grains' step, which kicks with these forces.
+    pipeline.add(sim::Hook::post_force, "fluid_grain_coupling", [this] { exchange(); });
+}
+
+template <int Dim>
+void CouplingModule<Dim>::update_porosity() {
+    auto& ps = state_.particles;
+    coupling_.find_pairs(state_.grains->grains(), ps);
+    pairs_generation_ = ps.generation();
+    const Index n = ps.size();
+    std::vector<double> eps(static_cast<std::size_t>(n));
+    coupling_.compute_porosity(state_.grains->grains(), ps, eps.data());
+
+    double* porosity = ps.fields().template get<double>("porosity").data();
+    double* m = ps.fields().template get<double>("mass").data();
+    double* rho = ps.fields().template get<double>("density").data();
+    double* rho_half = ps.fields().template get<double>("density_half").data();
+    const std::int32_t* phase = ps.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    // A fluid particle new to the coupling holds fluid at its density in all of its volume m / rho; the
+    // grains around it take (1 - eps) of that volume, so it keeps the fluid part: m and rho_bar = eps rho
+    // (eq. 21). Fluid an inlet emitted into a grain's reach was booked in full as inflow: the part the
+    // grain displaces is taken back.
+    const double removed = parallel::sum(n, 0.0, [&](Index a) {
+        if (phase[a] != fluid) {
+            porosity[a] = 1.0;
+            return 0.0;
+        }
+        const double e = eps[static_cast<std::size_t>(a)];
+        const bool fresh = porosity[a] == 0.0;
+        porosity[a] = e;
+        if (!fresh || e == 1.0) return 0.0;
+        const double taken = (1.0 - e) * m[a];
+        m[a] *= e;
+        rho[a] *= e;
+        rho_half[a] *= e;
+        return taken;
+    });
+    if (!priming_) state_.ledger.in -= removed;
+    priming_ = false;
+}
+
+template <int Dim>
+void CouplingModule<Dim>::exchange() {
+    auto& ps = state_.particles;
+    if (pairs_generation_ != ps.generation())
+        throw std::logic_error("fluid-grain pairs used after the particle set changed");
+    auto& grains = state_.grains->grains();
+    auto& fields = grains.fields();
+    coupling_.exchange_forces(grains, ps, ps.fields().template get<double>("porosity").data(),
+                              fields.template get<core::Vec<Dim>>("fluid_force").data(),
+                              fields.template get<core::Vec<Dim>>("drag_force").data());
+}
+
+template <int Dim>
+void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    using sim::OutputValue;
+    const auto& ps = state_.particles;
+    const double* porosity = ps.fields().template get<double>("porosity").data();
+    const std::int32_t* phase = ps.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const double min_eps = parallel::reduce(
+        ps.size(), 1.0, [&](Index a) { return phase[a] == fluid && porosity[a] > 0.0 ? porosity[a] : 1.0; },
+        [](double x, double y) { return std::min(x, y); });
+    out.push_back(OutputValue::real("min_porosity", min_eps));
+
+    // The grains' mean porosity (eq. 45) over those with fluid around them, and their mass-weighted
+    // velocity along gravity: the settling velocity, whose last value is the terminal velocity of a
+    // sedimentation case.
+    const auto& grains = state_.grains->grains();
+    const auto& gs = coupling_.grain_state();
+    double eps_sum = 0.0, eps_count = 0.0;
+    for (std::size_t i = 0; i < gs.porosity.size(); ++i)
+        if (gs.shepard[i] > 0.0) {
+            eps_sum += gs.porosity[i];
+            eps_count += 1.0;
+        }
+    out.push_back(OutputValue::real("grain_porosity", eps_count > 0.0 ? eps_sum / eps_count
+                                                                      : std::numeric_limits<double>::quiet_NaN()));
+    double speed = 0.0, grain_mass = 0.0;
+    for (Index i = 0; i < grains.size(); ++i) {
+        speed += grains.mass()[i] * core::norm(grains.velocity()[i]);
+        grain_mass += grains.mass()[i];
+    }
+    out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0).series_only());
+    const double g = core::norm(gravity_);
+    if (g > 0.0 && grains.size() > 0) {
+        const core::Vec<Dim> down = gravity_ * (1.0 / g);
+        double mv = 0.0, mass = 0.0;
+        for (Index i = 0; i < grains.size(); ++i) {
+            mv += grains.mass()[i] * core::dot(grains.velocity()[i], down);
+            mass += grains.mass()[i];
+        }
+        out.push_back(OutputValue::real("settling_velocity", mv / mass).series_only());
+        out.push_back(OutputValue::real("terminal_velocity", mv / mass).summary_only());
+    }
+    out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed()).summary_only());
+    out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count())).series_only());
+}
+
+template class CouplingModule<2>;
+template class CouplingModule<3>;
+
+}  // namespace grit::modules
