@@ -88,8 +88,7 @@ private:
 /// Volume of a grain of radius r: pi r^2 per metre in 2D, 4/3 pi r^3 in 3D.
 template <int Dim>
 constexpr double grain_volume(double radius) noexcept {
-    if constexpr (Dim == 2) return std::numbers::pi * radius * radius;
-    else return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+    return dem::grain_mass<Dim>(1.0, radius);  // the mass at unit density
 }
 
 extern template class FluidGrainCoupling<2>;
