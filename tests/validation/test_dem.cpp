@@ -24,7 +24,7 @@ constexpr double g = 9.81;
 /// slowest rebound (0.12 m/s) is still clean. dt = eq. (51) / 4 for the linear law (at the full eq. (51)
 /// step the dashpot's jump at contact entry and exit moves e by up to 2 xi omega dt, 1.3 % for
 /// e = 0.5); for Hertz the step that resolves the first, fastest impact (sqrt(2 g 45 mm), 1/50 of its
-/// duration; slower impacts last longer): the disc's contact is the sphere's, about 35 steps of 0.2
+/// duration; slower impacts last longer): the disc's contact is the sphere's, about 33 steps of 0.2
 /// Rayleigh time long, and at that step the rebound ratio of e = 0.5 scattered by 2.6 %.
 std::vector<double> drop_apexes(const std::string& law, double e, int bounces, double* energy_error = nullptr) {
     const GrainMaterial m{"drop", 4120.0, law == "linear" ? 1e9 : 1e11, 0.3, 0.3, e, 0.0};
