@@ -1,6 +1,11 @@
 // The grain contact loops: grain-grain over the full neighbour lists and grain-wall over the planes, in
 // gather form (each grain writes only its own force, torque and history), so results are bit-identical
 // for any thread count. Law formulas live in contact_laws.hpp; this file holds geometry and loops.
+//
+// 2D: a disc collides like the sphere of its diameter. The law is evaluated with the sphere masses
+// (contact_mass) and gives a force in N; the discs receive that force times s = m*_disc / m*_sphere, in
+// N per metre of thickness, so that their relative motion (overlap, contact duration, restitution) is
+// the spheres' and both receive equal and opposite forces (docs/theory.md).
 #pragma once
 
 #include <cstdint>
@@ -38,13 +43,28 @@ struct ContactResponse {
     core::Vec<Dim> history;
 };
 
+/// The factor s = m*_disc / m*_sphere from the law's force [N] between two spheres to the force [N/m]
+/// between the two discs of their diameters (2D; 1 in 3D): with it the discs' relative acceleration,
+/// s F / m*_disc = F / m*_sphere, is the spheres'. `mass` is the grain's own mass, `sphere` its
+/// contact_mass; body b of infinite mass is a wall, where s = m_a / M_a. One division.
+template <int Dim>
+inline double disc_force_scale(double mass_a, double sphere_a, double mass_b, double sphere_b) noexcept {
+    if constexpr (Dim == 3) {
+        return 1.0;
+    } else {
+        if (mass_b == std::numeric_limits<double>::infinity()) return mass_a / sphere_a;
+        return mass_a * mass_b * (sphere_a + sphere_b) / ((mass_a + mass_b) * (sphere_a * sphere_b));
+    }
+}
+
 /// One contact in canonical orientation: n from a to b, `relative_velocity` = v_a - v_b at the contact
 /// (eq. 7). The tangential history is carried into the current tangent plane, then grows by v_t dt
-/// (eq. 9).
+/// (eq. 9). In 2D the force and moment are the law's times `force_scale` (disc_force_scale: normal and
+/// tangential alike, so the Coulomb cap and the history are the sphere's); 3D ignores it.
 template <int Dim, class Law>
 [[gnu::always_inline]] inline ContactResponse<Dim> contact_response(const Law& law, const PairMaterial& pair, const core::Vec<Dim>& n,
                                              const core::Vec<Dim>& relative_velocity, const ContactKinematics& c,
-                                             const core::Vec<Dim>& history, double dt) noexcept {
+                                             const core::Vec<Dim>& history, double dt, double force_scale) noexcept {
     const double vn = core::dot(relative_velocity, n);
     const core::Vec<Dim> vt = relative_velocity - n * vn;
     ContactKinematics k = c;
@@ -53,7 +73,13 @@ template <int Dim, class Law>
     core::Vec<Dim> h = history + vt * dt;
     h -= n * core::dot(h, n);
     const TangentialContact<Dim> t = law.template tangential<Dim>(h, vt, normal, pair);
-    return {t.force - n * normal.force, moment<Dim>(n, t.force), t.history};
+    if constexpr (Dim == 2) {
+        const core::Vec<Dim> ft = t.force * force_scale;
+        return {ft - n * (normal.force * force_scale), moment<Dim>(n, ft), t.history};
+    } else {
+        (void)force_scale;
+        return {t.force - n * normal.force, moment<Dim>(n, t.force), t.history};
+    }
 }
 
 /// Per-entry results of the pair pass, reused between steps (sized by the neighbour list). A pair's
@@ -116,6 +142,7 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
         const Vec xa = p.x[a], va = p.v[a];
         const Spin<Dim> wra = p.w[a] * p.radius[a];
         const double ra = p.radius[a], ma = p.mass[a];
+        const double sphere_a = contact_mass<Dim>(ma, ra);
         const std::int32_t mat_a = p.material[a];
         Vec fa = Vec::zero();
         Spin<Dim> ta = zero_spin<Dim>();
@@ -136,9 +163,11 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
             const double r = std::sqrt(r2);
             const Vec n = d * (1.0 / r);
             const Vec vab = va - p.v[b] + spin_cross<Dim>(wra + p.w[b] * p.radius[b], n);
-            const ContactKinematics c{reach - r, 0.0, ra, p.radius[b], ma, p.mass[b]};
+            const double mb = p.mass[b], sphere_b = contact_mass<Dim>(mb, p.radius[b]);
+            const ContactKinematics c{reach - r, 0.0, ra, p.radius[b], sphere_a, sphere_b};
             const ContactResponse<Dim> res =
-                contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt);
+                contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt,
+                                      disc_force_scale<Dim>(ma, sphere_a, mb, sphere_b));
             p.h[k] = res.history;
             const Index m = p.mirror[k];
             p.result[m] = {res.force, res.lever_moment};
@@ -202,9 +231,11 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
             }
             const Vec n = -wall.normal;  // from the grain (a) to the wall (b)
             const Vec vab = v[i] + spin_cross<Dim>(w[i] * radius[i], n);
-            const ContactKinematics c{radius[i] - gap, 0.0, radius[i], infinite, mass[i], infinite};
+            const double sphere = contact_mass<Dim>(mass[i], radius[i]);
+            const ContactKinematics c{radius[i] - gap, 0.0, radius[i], infinite, sphere, infinite};
             const ContactResponse<Dim> res =
-                contact_response<Dim>(law, materials.at(material[i], wall.material), n, vab, c, h, dt);
+                contact_response<Dim>(law, materials.at(material[i], wall.material), n, vab, c, h, dt,
+                                      disc_force_scale<Dim>(mass[i], sphere, infinite, infinite));
             h = res.history;
             f += res.force;
             t += res.lever_moment * radius[i];

@@ -5,7 +5,9 @@
 // Convention (first paper eqs. 5-8): a contact joins body a and body b; n is the unit vector from a to
 // b; v_ab = v_a - v_b + (R_a w_a + R_b w_b) x n is the velocity of a's surface relative to b's at the
 // contact; the overlap is delta_n = R_a + R_b - |x_b - x_a| > 0. A plane wall is body b with infinite
-// radius and mass. Forces returned are those on body a; body b receives the opposite.
+// radius and mass. Forces returned are those on body a; body b receives the opposite. The laws are those
+// of spheres in 2D too (masses and forces in kg and N): contact_forces.hpp turns the force into the
+// per-metre force of the discs (a disc collides like the sphere of its diameter, docs/theory.md).
 #pragma once
 
 #include <cmath>
@@ -33,7 +35,7 @@ struct ContactKinematics {
     double approach_speed = 0.0;   ///< v_ab . n [m/s]; positive while the bodies close in
     double radius_a = 0.0;         ///< R_a [m]
     double radius_b = 0.0;         ///< R_b [m]; infinity for a wall
-    double mass_a = 0.0;           ///< m_a [kg] (per metre of thickness in 2D)
+    double mass_a = 0.0;           ///< m_a [kg]; in 2D the sphere's mass, not the disc's (contact_mass)
     double mass_b = 0.0;           ///< m_b [kg]; infinity for a wall
 };
 

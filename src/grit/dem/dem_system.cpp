@@ -162,11 +162,12 @@ double DemSystem<Dim>::stable_time_step(double impact_speed) const {
     const std::int32_t* mat = grains_.material();
     return min_over_grains(n, 1e300, [&](Index i) {
         const GrainMaterial& m = materials_[static_cast<std::size_t>(mat[i])];
-        if (std::holds_alternative<LinearSpringDashpot>(law_)) return linear_time_step<Dim>(m, r[i]);
+        // The sphere's mass in 2D too: a disc's contacts are the sphere's (contact_forces.hpp).
+        if (std::holds_alternative<LinearSpringDashpot>(law_)) return linear_time_step(m, r[i]);
         double dt = 0.2 * rayleigh_time(m, r[i]);
         if (impact_speed > 0.0) {
             const PairMaterial& p = pair_table_.at(mat[i], mat[i]);
-            const double mass = grain_mass<Dim>(m.density, r[i]);
+            const double mass = sphere_mass(m.density, r[i]);
             dt = std::min(dt, hertz_contact_time(0.5 * mass, 0.5 * r[i], p.youngs_effective, impact_speed) / 50.0);
         }
         return dt;

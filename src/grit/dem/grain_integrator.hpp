@@ -62,13 +62,12 @@ double kick_drift_grains(GrainSet<Dim>& grains, double half_dt, double dt, const
 inline constexpr double paper_alpha_tn = 300.0;
 
 /// DEM time-step limit of eq. (51) for the linear law: dt = 2 pi / alpha_tn sqrt(m / k_n), with m the
-/// grain's own mass and k_n the eq. (10) stiffness of two such grains (k_n = E R). A grain against a
-/// wall (k_n = 2 E R, m* = m) and two equal grains (k_n = E R, m* = m/2) have the same contact period,
-/// so this is the limit of both. 2D: m per metre of thickness and k_n per metre (E R read per metre),
-/// the same ratio as in 3D for a given R.
-template <int Dim>
-double linear_time_step(const GrainMaterial& material, double radius, double alpha_tn = paper_alpha_tn) {
-    const double m = grain_mass<Dim>(material.density, radius);
+/// grain's sphere mass rho 4/3 pi R^3 and k_n the eq. (10) stiffness of two such grains (k_n = E R). A
+/// grain against a wall (k_n = 2 E R, m* = m) and two equal grains (k_n = E R, m* = m/2) have the same
+/// contact period, so this is the limit of both. The same in 2D: a disc's contacts are the sphere's
+/// (contact_mass, disc_force_scale), so their period is too.
+inline double linear_time_step(const GrainMaterial& material, double radius, double alpha_tn = paper_alpha_tn) {
+    const double m = sphere_mass(material.density, radius);
     return 2.0 * std::numbers::pi / alpha_tn * std::sqrt(m / (material.youngs_modulus * radius));
 }
 
@@ -81,7 +80,8 @@ inline double rayleigh_time(const GrainMaterial& material, double radius) {
 }
 
 /// Duration of an elastic Hertz impact, Johnson, Contact Mechanics (1985) eq. (11.24):
-/// t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5), with E* = Y* of the pair.
+/// t_c = 2.868 (m*^2 / (R* E*^2 v))^(1/5), with E* = Y* of the pair and m* of the spheres (in 2D too:
+/// contact_mass).
 inline double hertz_contact_time(double effective_mass, double effective_radius, double youngs_effective,
                                  double impact_speed) {
     return 2.868 * std::pow(effective_mass * effective_mass /

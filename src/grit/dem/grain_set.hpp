@@ -14,12 +14,26 @@
 
 namespace grit::dem {
 
+/// Mass of the sphere of radius r, rho 4/3 pi r^3 [kg].
+constexpr double sphere_mass(double density, double radius) noexcept {
+    return density * (4.0 / 3.0) * std::numbers::pi * radius * radius * radius;
+}
+
 /// Mass of a grain of radius r: a sphere rho 4/3 pi r^3 in 3D; in 2D a disc per metre of thickness,
 /// rho pi r^2 [kg/m] (2D masses, forces and torques are per metre of thickness, as in the SPH set).
 template <int Dim>
 constexpr double grain_mass(double density, double radius) noexcept {
     if constexpr (Dim == 2) return density * std::numbers::pi * radius * radius;
-    else return density * (4.0 / 3.0) * std::numbers::pi * radius * radius * radius;
+    else return sphere_mass(density, radius);
+}
+
+/// The mass a grain's contacts are evaluated with: the sphere of its radius in 2D and 3D alike ("a disc
+/// collides like the sphere of its diameter", docs/theory.md). From the grain's own mass m: m in 3D,
+/// m 4/3 r in 2D (the disc's rho pi r^2 per metre times 4/3 r is rho 4/3 pi r^3).
+template <int Dim>
+constexpr double contact_mass(double mass, double radius) noexcept {
+    if constexpr (Dim == 2) return mass * ((4.0 / 3.0) * radius);
+    else return mass;
 }
 
 /// Moment of inertia about the centre: m r^2 / 2 for a disc (per metre of thickness), 2/5 m r^2 for a

@@ -117,7 +117,7 @@ TEST(GrainMaterials, GarnetOfTable4) {
 // dt = 2 pi / 300 sqrt(m / k_n) = 5.5249e-10 s. (The paper quotes 6.34e-9 s, which its stated data do
 // not give; see docs/theory.md.)
 TEST(GrainTimeStep, Equation51ForGarnet) {
-    EXPECT_NEAR(linear_time_step<3>(garnet(), 0.1e-3), 5.524916e-10, 1e-15);
+    EXPECT_NEAR(linear_time_step(garnet(), 0.1e-3), 5.524916e-10, 1e-15);
 }
 
 TEST(SizeDistributions, DrawInsideTheirBoundsAndRepeatWithTheSeed) {
