@@ -12,9 +12,11 @@ namespace grit::sph {
 
 namespace {
 
-template <int Dim, class K>
+// `image` takes x_a - x_b to its nearest periodic image; without periodic axes it is OpenImage, the
+// identity, and the loop compiles to what it was before periodic axes existed.
+template <int Dim, class K, class Image>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work) {
+                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work, const Image image) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
@@ -35,6 +37,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const double eps_h2 = 0.01 * h * h;  // regularisation of eqs. (25) and (27)
     const double delta = prm.density_diffusion;
     const Vec g = prm.gravity;
+    const Vec g_hydrostatic = prm.hydrostatic_gravity;
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     const auto solid = static_cast<std::int32_t>(Phase::solid);
 
@@ -56,7 +59,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 #pragma omp simd reduction(+ : dv[:Dim], continuity, diffusion)
         for (Index k = first; k < last; ++k) {
             const Index b = nbr[k];
-            const Vec xab = xa - x[b];
+            const Vec xab = image(xa - x[b]);
             const double r2 = core::norm2(xab);
             // Pairs in the list's skin beyond the support get f = 0 and add nothing; testing for
             // them would cost a mispredicted branch, so they go through the same arithmetic.
@@ -86,7 +89,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 
             // Density diffusion between fluid particles only, less its hydrostatic part.
             const double fluid_b = phase[b] == fluid ? 1.0 : 0.0;
-            const double hydrostatic = hydrostatic_scale * core::dot(g, xab);  // rho^H_a - rho^H_b
+            const double hydrostatic = hydrostatic_scale * core::dot(g_hydrostatic, xab);  // rho^H_a - rho^H_b
             diffusion += fluid_b * volume_b * ((rho_a - rho[b]) - hydrostatic) * r2 * f * inv_r2;
         }
         Vec total = g;
@@ -119,7 +122,13 @@ template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
                          const SphWorkspace& workspace) {
-    std::visit([&](const auto& k) { fluid_rates_loop(particles, neighbors, k, parameters, workspace); }, kernel);
+    std::visit(
+        [&](const auto& k) {
+            neighbors::with_image(parameters.periodic_box, [&](const auto image) {
+                fluid_rates_loop(particles, neighbors, k, parameters, workspace, image);
+            });
+        },
+        kernel);
 }
 
 template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
