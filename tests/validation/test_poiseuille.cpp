@@ -39,6 +39,7 @@ struct ProfileError {
     double max_error = 0.0;  ///< largest |u_x - u(y, t)| over fluid particles, / u_max
     double rms_error = 0.0;  ///< root mean square of the same, / u_max
     double max_cross = 0.0;  ///< largest |u_y| / u_max
+    double max_spread = 0.0; ///< largest |u_x - mean u_x of its row| / u_max: the flow must not depend on x
 };
 
 ProfileError profile_error(grit::sim::Simulation<2>& sim, double t, bool steady) {
@@ -56,13 +57,31 @@ ProfileError profile_error(grit::sim::Simulation<2>& sim, double t, bool steady)
         ++n;
     }
     e.rms_error = std::sqrt(e.rms_error / static_cast<double>(n));
+    // Rows of particles (the flow is laminar: they stay in their rows), by y in spacings.
+    constexpr double dx = 2.5e-5;
+    std::map<long, std::pair<double, long>> rows;  // sum of u_x, count
+    auto row_of = [&](grit::Index i) { return std::lround(ps.position()[i][1] / dx); };
+    for (grit::Index i = 0; i < ps.size(); ++i) {
+        if (ps.phase()[i] != static_cast<std::int32_t>(grit::Phase::fluid)) continue;
+        auto& r = rows[row_of(i)];
+        r.first += ps.velocity()[i][0];
+        ++r.second;
+    }
+    for (grit::Index i = 0; i < ps.size(); ++i) {
+        if (ps.phase()[i] != static_cast<std::int32_t>(grit::Phase::fluid)) continue;
+        const auto& r = rows.at(row_of(i));
+        e.max_spread = std::max(e.max_spread, std::abs(ps.velocity()[i][0] - r.first / static_cast<double>(r.second)) / u_max);
+    }
     return e;
 }
 
 }  // namespace
 
-// Tolerances (of u_max, per particle): 2 % during the start-up and at steady state (measured: at most
-// 0.63 %, 40 spacings across H); |u_y| < 1 %. Mass exact, every particle in [0, period) along x.
+// Tolerances (of u_max, per particle): 1.5 % during the start-up and at steady state, rms 0.75 %
+// (measured: at most 0.63 %, rms 0.43 %, 40 spacings across H); |u_y| < 0.5 % (measured 0.22 %). The
+// flow must not depend on x: each particle within 0.01 % of its row's mean (measured < 5e-5 %; with the
+// pairs across the periodic face left out of the fluid sums it is 1.2 %, and the other errors double).
+// Mass exact, every particle in [0, period) along x.
 // One thread: 2160 particles give each of the ~15 parallel loops of a step too little work to share on
 // a loaded machine (Determinism.* runs the case at 1 and 2 threads).
 TEST(Poiseuille, PeriodicChannelMatchesSeriesSolutionAndParabola) {
@@ -83,10 +102,13 @@ TEST(Poiseuille, PeriodicChannelMatchesSeriesSolutionAndParabola) {
     for (const double t : {0.05, 0.1, 0.2, 0.3, 0.45, 0.6}) {
         sim.advance_to(t);
         const auto e = profile_error(sim, t, false);
-        std::printf("t = %.2f s  max |u - u_series| = %.3f %%  rms = %.3f %%  max |v_y| = %.3f %% of u_max\n", t,
-                    100.0 * e.max_error, 100.0 * e.rms_error, 100.0 * e.max_cross);
-        EXPECT_LT(e.max_error, 0.02) << "t = " << t;
-        EXPECT_LT(e.max_cross, 0.01) << "t = " << t;
+        std::printf("t = %.2f s  max |u - u_series| = %.3f %%  rms = %.3f %%  max |v_y| = %.3f %%  max |u - row mean| = "
+                    "%.4f %% of u_max\n",
+                    t, 100.0 * e.max_error, 100.0 * e.rms_error, 100.0 * e.max_cross, 100.0 * e.max_spread);
+        EXPECT_LT(e.max_error, 0.015) << "t = " << t;
+        EXPECT_LT(e.rms_error, 0.0075) << "t = " << t;
+        EXPECT_LT(e.max_cross, 0.005) << "t = " << t;
+        EXPECT_LT(e.max_spread, 1e-4) << "t = " << t;
 
         ASSERT_EQ(ps.size(), count) << "particles lost";
         double m = 0.0;
@@ -98,13 +120,13 @@ TEST(Poiseuille, PeriodicChannelMatchesSeriesSolutionAndParabola) {
             ASSERT_TRUE(x[1] > -1.0e-4 && x[1] < 1.1e-3) << "particle " << i << " at y = " << x[1];
         }
     }
-    // Steady state: the parabola (the series' last mode is 0.3 % of u_max at 0.6 s, inside the tolerance).
+    // Steady state: the parabola (the series' slowest mode is 0.3 % of u_max at 0.6 s, inside the tolerance).
     const auto e = profile_error(sim, 0.6, true);
     std::printf("steady: max |u - g y (H - y) / (2 nu)| = %.3f %% of u_max, rms %.3f %%; centre probe %.5g m/s\n",
                 100.0 * e.max_error, 100.0 * e.rms_error, sim.probe("u_centre"));
-    EXPECT_LT(e.max_error, 0.02);
-    EXPECT_NEAR(sim.probe("u_centre") / u_max, 1.0, 0.02);
-    EXPECT_NEAR(sim.probe("u_quarter") / u_max, 0.75, 0.02);  // a probe on the periodic face
+    EXPECT_LT(e.max_error, 0.015);
+    EXPECT_NEAR(sim.probe("u_centre") / u_max, 1.0, 0.015);
+    EXPECT_NEAR(sim.probe("u_quarter") / u_max, 0.75, 0.015);  // a probe on the periodic face
     RecordProperty("max_error_percent", std::to_string(100.0 * e.max_error));
     // Particles crossed the periodic face: the flow (along +x) moved them up to 0.45 mm, and those that
     // came back through x = 0 are now behind where they started.
