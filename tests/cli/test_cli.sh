@@ -351,6 +351,24 @@ expect_input_error "unknown grain material" "grains[0].material" "diamond" "buil
 expect_input_error "restitution out of range" "grain_materials.drop_grain.restitution" "1.5" -- \
     run "$BOUNCE" --set grain_materials.drop_grain.restitution=1.5
 
+# Periodic axes: domain.periodic and its older spelling dem.periodic must agree; a periodic axis must be
+# three neighbour-list radii long; periodic solids are refused.
+POIS=$ROOT/cases/poiseuille_periodic_2d/case.toml
+grit check "$POIS"
+if [[ $RC -eq 0 ]]; then
+    pass "grit check cases/poiseuille_periodic_2d/case.toml exits 0"
+else
+    fail "grit check cases/poiseuille_periodic_2d/case.toml exits 0" "exit $RC: $(cat "$W/stderr")"
+fi
+expect_input_error "domain.periodic and dem.periodic differ" "'domain.periodic' = [\"x\"]" \
+    "'dem.periodic' = [\"y\"]" "differ" -- run "$BOUNCE" --set 'domain.periodic=["x"]' --set 'dem.periodic=["y"]'
+expect_input_error "periodic axis shorter than three list radii" "key 'domain.periodic'" \
+    "three neighbour-list radii" -- run "$POIS" --set 'domain.max=[2.0e-4, 1.1e-3]' \
+    --set 'fluid[0].max=[2.0e-4, 9.875e-4]' --set 'wall[0].max=[2.0e-4, 1.25e-5]' \
+    --set 'wall[1].max=[2.0e-4, 1.0625e-3]'
+expect_input_error "periodic solids" "domain.periodic" "solid[0]" "not support solids" -- \
+    run "$ROOT/cases/elastic_impact_2d/case.toml" --set 'domain.periodic=["x"]'
+
 # --- determinism: 1 and 2 threads give the same bytes ------------------------------------------------
 
 jet_ok=1

@@ -78,3 +78,11 @@ TEST(Determinism, EveryCaseIsIdenticalAtOneAndTwoThreads) {
             compare<3>(spec);
     }
 }
+
+// The periodic channel with the fluid set moving fast along the periodic axis: within the 40 steps
+// particles cross the periodic face and the lists are rebuilt over the periodic grid.
+TEST(Determinism, PeriodicChannelAcrossTheFaceIsIdenticalAtOneAndTwoThreads) {
+    const auto spec = grit::testing::load_case("poiseuille_periodic_2d/case.toml",
+                                               {"fluid[0].velocity=[0.05, 0.0]", "materials.viscous_water.sound_speed=0.5"});
+    compare<2>(spec);
+}

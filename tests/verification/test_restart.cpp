@@ -132,6 +132,42 @@ TEST(Restart, SettlingGrainsWithContactHistoryContinueBitForBit) {
     });
 }
 
+// The periodic channel with the fluid moving fast along the periodic axis: particles have crossed the
+// periodic face and the lists have been rebuilt over the periodic grid before the checkpoint, and both
+// go on after it (the lists are rebuilt on load from their reference positions, on the periodic grid).
+TEST(Restart, PeriodicChannelAcrossTheFaceContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case("poiseuille_periodic_2d/case.toml",
+                                               {"fluid[0].velocity=[0.05, 0.0]", "materials.viscous_water.sound_speed=0.5"});
+    check_restart<2>(spec, 30, 60, true, [](Simulation<2>& s) {
+        EXPECT_GE(s.state().neighbors.builds(), 3) << "the lists were not rebuilt before the checkpoint";
+        const auto& ps = s.particles();
+        bool crossed = false;  // a fluid particle that started in the last column now lies in the first
+        for (grit::Index i = 0; i < ps.size(); ++i)
+            crossed |= ps.phase()[i] == 0 && ps.position()[i][0] < 0.5 * 2.5e-5;
+        EXPECT_TRUE(crossed) << "no particle crossed the periodic face before the checkpoint";
+    });
+}
+
+// A periodic run's checkpoint does not continue in a case without periodic axes.
+TEST(Restart, CheckpointWithOtherPeriodicAxesIsRefused) {
+    const fs::path file = scratch_file("periodic.h5");
+    {
+        Simulation<2> s(grit::testing::load_case("poiseuille_periodic_2d/case.toml"), grit::testing::in_memory());
+        s.advance_to(0.0);
+        s.save_checkpoint(file);
+    }
+    Simulation<2> open(grit::testing::load_case("poiseuille_periodic_2d/case.toml", {"domain.periodic=[]"}),
+                       grit::testing::in_memory());
+    try {
+        open.load_checkpoint(file);
+        FAIL() << "a periodic checkpoint was accepted by a case without periodic axes";
+    } catch (const grit::core::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("domain.periodic"), std::string::npos) << e.what();
+    }
+    fs::remove(file);
+}
+
 TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
     const fs::path file = scratch_file("foreign.h5");
     {

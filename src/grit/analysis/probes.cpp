@@ -24,7 +24,7 @@ struct WeightedSum {
 
 template <int Dim>
 double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<Dim>& ps,
-                      const sph::Kernel<Dim>& kernel, double spacing) {
+                      const sph::Kernel<Dim>& kernel, double spacing, const neighbors::PeriodicBox<Dim>& box) {
     using Vec = core::Vec<Dim>;
     const Vec* x = ps.position();
     const auto* phase = ps.phase();
@@ -49,12 +49,13 @@ double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<
     const double* p = ps.pressure();
     const double* m = ps.mass();
     const Vec* v = ps.velocity();
+    const bool periodic = box.any();
     const auto s = std::visit(
         [&](const auto& k) {
             return parallel::sum(ps.size(), WeightedSum<Dim>{}, [&](Index i) {
                 WeightedSum<Dim> w;
                 if (phase[i] != fluid) return w;
-                const double r = core::norm(at - x[i]);
+                const double r = core::norm(periodic ? box.nearest_image(at - x[i]) : at - x[i]);
                 if (r >= k.support()) return w;
                 w.weight = k.value(r) * m[i] / rho[i];
                 const double q = probe.quantity == "pressure" ? p[i]
@@ -68,7 +69,9 @@ double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<
     return s.weight > 0.0 ? s.value / s.weight : 0.0;
 }
 
-template double evaluate_probe<2>(const io::ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double);
-template double evaluate_probe<3>(const io::ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double);
+template double evaluate_probe<2>(const io::ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double,
+                                  const neighbors::PeriodicBox<2>&);
+template double evaluate_probe<3>(const io::ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double,
+                                  const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

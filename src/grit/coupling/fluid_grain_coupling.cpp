@@ -21,7 +21,8 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     // Each fluid particle's grains closer than R_c,i, in ascending grain index.
     pairs_.build(
-        particles.position(), n, [&](Index a) { return phase[a] == fluid; }, grains.position(), reach_.data(), ng, 0.0);
+        particles.position(), n, [&](Index a) { return phase[a] == fluid; }, grains.position(), reach_.data(), ng, 0.0,
+        box_);
 
     const std::size_t np = pairs_.pair_count();
     weight_.resize(np);
@@ -39,7 +40,7 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
                 for (Index s = pairs_.begin(a); s < pairs_.end(a); ++s) {
                     const Index i = idx[s];
                     weight_[static_cast<std::size_t>(s)] =
-                        kernel[static_cast<std::size_t>(i)].value(std::sqrt(core::norm2(x[a] - xg[i])));
+                        kernel[static_cast<std::size_t>(i)].value(std::sqrt(core::norm2(box_.nearest_image(x[a] - xg[i]))));
                     pair_particle_[static_cast<std::size_t>(s)] = a;
                 }
             });
@@ -135,7 +136,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
-                    const Vec xia = xg[i] - x[a];
+                    const Vec xia = box_.nearest_image(xg[i] - x[a]);
                     const double r2 = core::norm2(xia);
                     const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_i W_ia = xia f
                     const double volume_a = m[a] / rho[a];

@@ -44,8 +44,11 @@ public:
     using Vec = core::Vec<Dim>;
 
     FluidGrainCoupling() = default;
-    FluidGrainCoupling(CouplingParameters parameters, const sph::Kernel<Dim>& kernel_type)
-        : parameters_(parameters), kernel_type_(kernel_type) {}
+    /// `box`: the run's periodic axes (domain.periodic); a grain near a periodic face reaches the fluid
+    /// across it, at the nearest image.
+    FluidGrainCoupling(CouplingParameters parameters, const sph::Kernel<Dim>& kernel_type,
+                       const neighbors::PeriodicBox<Dim>& box = {})
+        : parameters_(parameters), kernel_type_(kernel_type), box_(box) {}
 
     /// Lists the fluid particles within R_c,i of every grain and the weights W_ai, at the current
     /// positions. Valid while neither set changes.
@@ -75,6 +78,7 @@ public:
 private:
     CouplingParameters parameters_;
     sph::Kernel<Dim> kernel_type_{sph::CubicSpline<Dim>(1.0)};
+    neighbors::PeriodicBox<Dim> box_;
     neighbors::CrossPairList<Dim> pairs_;        // grains near each fluid particle (rows by particle)
     std::vector<double> weight_;                 // W_ai, in the order of pairs_
     std::vector<double> reach_;                  // R_c,i per grain

@@ -11,7 +11,8 @@ namespace grit::coupling {
 
 template <int Dim>
 void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
-                                        const particles::SphParticles<Dim>& particles, double dt) {
+                                        const particles::SphParticles<Dim>& particles, double dt,
+                                        const neighbors::PeriodicBox<Dim>& box) {
     contacts_.clear();
     const Index ng = grains.size();
     grain_start_.assign(static_cast<std::size_t>(ng) + 1, 0);
@@ -34,16 +35,17 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     // Each solid or wall particle's grains within R_i + 2 d_ini, in ascending grain index; the contacts
     // take the list's order (by particle, then grain) at any thread count.
     pairs_.build(
-        x, n, [&](Index a) { return phase[a] == solid || phase[a] == wall; }, xg, radius, ng, near_distance);
+        x, n, [&](Index a) { return phase[a] == solid || phase[a] == wall; }, xg, radius, ng, near_distance, box);
     contacts_.resize(pairs_.pair_count());
     if (contacts_.empty()) return;
 
     const double chi = parameters_.overlap_coefficient, mu = parameters_.friction;
+    const bool periodic = box.any();
     parallel::for_each(n, [&](Index a) {
         for (Index slot = pairs_.begin(a); slot < pairs_.end(a); ++slot) {
             const Index i = pairs_.indices()[slot];
             PenaltyContact<Dim>& c = contacts_[static_cast<std::size_t>(slot)];
-            const Vec r = x[a] - xg[i];
+            const Vec r = periodic ? box.nearest_image(x[a] - xg[i]) : x[a] - xg[i];
             const double d = std::sqrt(core::norm2(r));
             const Vec normal = d > 0.0 ? r * (1.0 / d) : Vec::zero();
             c.grain = i;

@@ -46,8 +46,10 @@ public:
     explicit GrainBoundaryContact(PenaltyContactParameters parameters) : parameters_(parameters) {}
 
     /// Finds the contacts (and near pairs) of grains with solid and wall particles at the current
-    /// positions and computes the contacts' forces (eq. 13) for a step of dt.
-    void compute(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles, double dt);
+    /// positions and computes the contacts' forces (eq. 13) for a step of dt. Along the periodic axes of
+    /// `box`, across the faces too (nearest image).
+    void compute(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles, double dt,
+                 const neighbors::PeriodicBox<Dim>& box = {});
 
     /// Adds the forces: F / m_a to the acceleration of solid particles (walls and clamped particles keep
     /// their prescribed motion), and -F with its moment about the centre (eq. 14) to the grains.

@@ -11,42 +11,15 @@
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
 #include "grit/neighbors/cell_grid.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 
 namespace grit::dem {
 
 /// The box of a grain system: periodic axes wrap between lower and upper; other axes are open (their
-/// bounds are ignored by the neighbour search, walls confine the grains).
+/// bounds are ignored by the neighbour search, walls confine the grains). The run's periodic box, the
+/// same type as the SPH particles' (case key domain.periodic).
 template <int Dim>
-struct GrainDomain {
-    std::array<bool, Dim> periodic{};
-    core::Vec<Dim> lower = core::Vec<Dim>::zero();
-    core::Vec<Dim> upper = core::Vec<Dim>::zero();
-
-    /// d wrapped to the nearest periodic image (minimum-image convention). Branch-free: open axes have
-    /// length 0 and inverse length 0.
-    core::Vec<Dim> nearest_image(core::Vec<Dim> d) const noexcept {
-        for (int k = 0; k < Dim; ++k) d[k] -= length_[k] * std::nearbyint(d[k] * inverse_length_[k]);
-        return d;
-    }
-    /// x moved into [lower, upper) along the periodic axes.
-    core::Vec<Dim> wrap(core::Vec<Dim> x) const noexcept {
-        for (int k = 0; k < Dim; ++k)
-            if (periodic[k]) x[k] -= length_[k] * std::floor((x[k] - lower[k]) * inverse_length_[k]);
-        return x;
-    }
-    /// Recomputes the cached lengths; call after changing periodic/lower/upper.
-    void finalise() noexcept {
-        for (int k = 0; k < Dim; ++k) {
-            length_[k] = periodic[k] ? upper[k] - lower[k] : 0.0;
-            inverse_length_[k] = periodic[k] ? 1.0 / length_[k] : 0.0;
-        }
-    }
-    double length(int k) const noexcept { return length_[k]; }
-
-private:
-    core::Vec<Dim> length_ = core::Vec<Dim>::zero();
-    core::Vec<Dim> inverse_length_ = core::Vec<Dim>::zero();
-};
+using GrainDomain = neighbors::PeriodicBox<Dim>;
 
 /// Full Verlet lists of grains within R_i + R_j + skin, built over grains sorted by cell.
 template <int Dim>

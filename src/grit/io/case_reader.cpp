@@ -565,6 +565,73 @@ dem::SizeDistribution read_grain_size(const Section& s, const dem::GrainMaterial
     return out;
 }
 
+/// An array of axis names ("x", "y", and "z" in 3D) as one flag per axis.
+std::vector<bool> read_axes(const Section& s, std::string_view key, int dim) {
+    std::vector<bool> out(static_cast<std::size_t>(dim), false);
+    for (const auto& a : s.strings_or(key, {})) {
+        const int k = a.size() == 1 ? a[0] - 'x' : -1;
+        if (k < 0 || k >= dim) s.fail(key, fmt::format("names axes \"x\", \"y\"{}", dim == 3 ? ", \"z\"" : ""));
+        out[static_cast<std::size_t>(k)] = true;
+    }
+    return out;
+}
+
+std::string axes_text(const std::vector<bool>& axes) {
+    std::string out;
+    for (std::size_t k = 0; k < axes.size(); ++k)
+        if (axes[k]) out += fmt::format("{}\"{}\"", out.empty() ? "" : ", ", static_cast<char>('x' + k));
+    return "[" + out + "]";
+}
+
+/// domain.periodic, or dem.periodic (its older spelling): the periodic axes of the SPH particles and
+/// the grains. Both given must agree. Refuses what periodic SPH does not support yet: solids, and
+/// outlets that cross a periodic face.
+void read_periodic(CaseSpec& c, const Section& domain, const Section& dem,
+                   const std::optional<std::vector<bool>>& dem_periodic) {
+    const auto dim = static_cast<std::size_t>(c.dimension);
+    c.periodic.assign(dim, false);
+    if (domain.has("periodic")) {
+        c.periodic = read_axes(domain, "periodic", c.dimension);
+        if (dem_periodic && *dem_periodic != c.periodic)
+            throw InputError(fmt::format(
+                "keys 'domain.periodic' = {} and 'dem.periodic' = {} differ: the periodic axes are those of the "
+                "SPH particles and the grains alike; give domain.periodic only",
+                axes_text(c.periodic), axes_text(*dem_periodic)));
+    } else if (dem_periodic) {
+        c.periodic = *dem_periodic;
+        c.periodic_key = "dem.periodic";
+    }
+    if (!c.any_periodic()) return;
+    const Section& owner = c.periodic_key == "dem.periodic" ? dem : domain;
+    if (!c.solids.empty())
+        owner.fail("periodic", fmt::format("periodic axes do not support solids yet ({} is a [[solid]]); remove the "
+                                           "periodic axes or the solids",
+                                           c.solids.front().key));
+    const char* axis = "xyz";
+    // The particle lattice closes across a periodic face only if the period holds whole spacings.
+    if (c.has_sph())
+        for (std::size_t k = 0; k < dim; ++k) {
+            if (!c.periodic[k]) continue;
+            const double spacings = (c.domain_max[k] - c.domain_min[k]) / c.particle_spacing;
+            if (std::abs(spacings - std::round(spacings)) > 1e-6 * std::max(1.0, spacings))
+                domain.fail("max", fmt::format("the period along the periodic axis {} ({} m, domain.max - domain.min) "
+                                               "is {:.6g} particle spacings, not a whole number: the particle "
+                                               "lattice would not close across the periodic face",
+                                               axis[k], c.domain_max[k] - c.domain_min[k], spacings));
+        }
+    for (const auto& o : c.outlets)
+        for (std::size_t k = 0; k < dim; ++k) {
+            if (!c.periodic[k]) continue;
+            const bool within = o.min[k] >= c.domain_min[k] && o.max[k] <= c.domain_max[k];
+            const bool across = o.min[k] <= c.domain_min[k] && o.max[k] >= c.domain_max[k];
+            if (!within && !across)
+                throw InputError(fmt::format(
+                    "key '{}.min'/'{}.max': the outlet box crosses a periodic face of the domain along {} ({} = {}); "
+                    "keep it inside [domain.min, domain.max] along {} or let it span the whole period",
+                    o.key, o.key, axis[k], c.periodic_key, axes_text(c.periodic), axis[k]));
+        }
+}
+
 CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
     if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
     toml::table root;
@@ -776,21 +843,15 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         gw.material = w.has("material") ? grain_table.resolve(w, "material", w.text("material")) : c.grains.front().material;
         c.grain_walls.push_back(std::move(gw));
     }
+    std::optional<std::vector<bool>> dem_periodic;
     if (top.has("dem")) {
         const Section d = top.section("dem");
         c.dem.contact_law = d.choice("contact_law", c.dem.contact_law, {"linear", "hertz"});
         c.dem.skin = d.number_or("skin", c.dem.skin, positive("[m]"));
-        const auto axes = d.strings_or("periodic", {});
-        c.dem.periodic.assign(static_cast<std::size_t>(dim), false);
-        for (const auto& a : axes) {
-            const int k = a.size() == 1 ? a[0] - 'x' : -1;
-            if (k < 0 || k >= dim) d.fail("periodic", fmt::format("names axes \"x\", \"y\"{}", dim == 3 ? ", \"z\"" : ""));
-            c.dem.periodic[static_cast<std::size_t>(k)] = true;
-        }
+        if (d.has("periodic")) dem_periodic = read_axes(d, "periodic", dim);
         c.dem.overlap_coefficient = d.number_or("overlap_coefficient", 0.0, in_range(0.0, 0.999));
         c.dem.solid_friction = d.number_or("solid_friction", -1.0, non_negative("[-]"));
     }
-    c.dem.periodic.resize(static_cast<std::size_t>(dim), false);
     if (top.has("coupling")) {
         const Section k = top.section("coupling");
         c.coupling.enabled = k.flag_or("enabled", true);
@@ -810,6 +871,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     for (int k = 0; k < dim; ++k)
         if (c.domain_max[k] <= c.domain_min[k]) domain.fail("max", "must exceed domain.min in every direction");
     c.remove_leaving = domain.choice("on_exit", "error", {"error", "remove"}) == "remove";
+    read_periodic(c, domain, top.section("dem"), dem_periodic);
 
     // Materials are read on first use; a defined but unused material is still checked and reported.
     for (const auto& name : materials.keys()) {

@@ -98,7 +98,6 @@ struct GrainWallSpec {
 struct DemSpec {
     std::string contact_law = "hertz";  ///< "linear" (first paper eqs. 2-11) or "hertz" (second paper)
     double skin = -1.0;                 ///< Verlet skin [m]; < 0: 0.2 x the largest diameter
-    std::vector<bool> periodic;         ///< per axis (needs the domain's bounds)
     double overlap_coefficient = 0.0;   ///< chi of eq. (13)
     double solid_friction = -1.0;       ///< mu grain-SPH solid/wall; < 0: the grain material's
 };
@@ -144,6 +143,15 @@ struct CaseSpec {
 
     std::vector<double> domain_min, domain_max;  ///< domain.min, domain.max [m]
     bool remove_leaving = false;                 ///< domain.on_exit = "remove" (else "error")
+    /// domain.periodic (or its older spelling dem.periodic): per axis, whether the axis wraps between
+    /// domain.min and domain.max, for the SPH particles and the grains alike.
+    std::vector<bool> periodic;
+    std::string periodic_key = "domain.periodic";  ///< the key that set `periodic` (for messages)
+    bool any_periodic() const {
+        for (bool p : periodic)
+            if (p) return true;
+        return false;
+    }
 
     std::vector<material::Material> materials;  ///< the materials the case uses
     std::vector<BlockSpec> fluids;

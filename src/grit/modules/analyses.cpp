@@ -53,7 +53,8 @@ void CracksModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
 
 template <int Dim>
 double ProbesModule<Dim>::value(std::size_t k) const {
-    return analysis::evaluate_probe(setup_.spec.probes[k], state_.particles, setup_.kernel, setup_.spacing);
+    return analysis::evaluate_probe(setup_.spec.probes[k], state_.particles, setup_.kernel, setup_.spacing,
+                                    setup_.periodic_box);
 }
 
 template <int Dim>

@@ -37,7 +37,7 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
     p.min_porosity = spec.coupling.min_porosity;
     p.fluid_density = fluid->reference_density();
     p.viscosity = fluid->dynamic_viscosity;
-    coupling_ = coupling::FluidGrainCoupling<Dim>(p, setup.kernel);
+    coupling_ = coupling::FluidGrainCoupling<Dim>(p, setup.kernel, setup.periodic_box);
 
     // A grain whose volume exceeds its kernel's reach drives the porosity at its centre below zero
     // (V_i W(0, h_c) > 1): the floor then hides it and the pressure of eq. (21) runs away. In 2D with the
@@ -57,6 +57,19 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
             "(use a radius of at least {:.2g} grain diameters)",
             p.radius_factor, worst, p.min_porosity,
             p.radius_factor * std::pow(worst / (1.0 - p.min_porosity), 1.0 / Dim) * 1.01));
+
+    // The pair list bins the grains in cells of the largest R_c: a periodic axis must hold three.
+    double largest_reach = 0.0;
+    for (Index i = 0; i < grains.size(); ++i)
+        largest_reach = std::max(largest_reach, p.radius_factor * 2.0 * grains.radius()[i]);
+    for (int k = 0; k < Dim; ++k) {
+        const double length = setup.periodic_box.length(k);
+        if (setup.periodic_box.periodic[k] && length < 3.0 * largest_reach * (1.0 + 1e-12))
+            throw core::InputError(fmt::format(
+                "key 'coupling.radius' = {}: the coupling reaches {:.3g} m from the largest grain, and the periodic "
+                "axis {} is {:.3g} m long, less than three reaches (widen the domain, or use a smaller radius)",
+                p.radius_factor, largest_reach, "xyz"[k], length));
+    }
 
     // 0 marks a particle the coupling has not seen yet (update_porosity gives it its porosity).
     state.particles.fields().template add<double>("porosity", 0.0, true);

@@ -34,7 +34,7 @@ void GrainContactModule<Dim>::couple() {
         particles.fields().has("fixed") ? particles.fields().template get<std::int32_t>("fixed").data() : nullptr;
     // dt of eq. (13)'s stiffness 2 m_a / dt^2: the stable step, not one shortened to land on an output
     // time (a short step would make the penalty force, and the impulse, blow up).
-    contact_.compute(grains, particles, state_.clock.dt_stable);
+    contact_.compute(grains, particles, state_.clock.dt_stable, setup_.periodic_box);
     contact_.apply(grains, particles, fixed);
 
     // First contacts with SPH solids and walls. A target counts as left only when no particle of it is

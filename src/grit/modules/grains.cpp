@@ -33,9 +33,7 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
     p.contact_law = spec.dem.contact_law;
     p.gravity = to_vec<Dim>(spec.gravity);
     p.skin = spec.dem.skin;
-    for (int k = 0; k < Dim; ++k) p.domain.periodic[k] = spec.dem.periodic[static_cast<std::size_t>(k)];
-    p.domain.lower = to_vec<Dim>(spec.domain_min);
-    p.domain.upper = to_vec<Dim>(spec.domain_max);
+    p.domain = setup.periodic_box;  // domain.periodic: the same box as the SPH particles'
     state.grains = std::make_unique<dem::DemSystem<Dim>>(p, spec.grain_materials);
     auto& system = *state.grains;
     system.grains().fields().template add<std::int32_t>("contact_targets", 0, false);
@@ -63,7 +61,7 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
         if (seeds.empty()) throw core::InputError(fmt::format("{}: the arrangement holds no grain", b.key));
         for (const auto& s : seeds) {
             for (int k = 0; k < Dim; ++k)
-                if (!spec.dem.periodic[static_cast<std::size_t>(k)] &&
+                if (!setup.periodic_box.periodic[k] &&
                     (s.position[k] < spec.domain_min[static_cast<std::size_t>(k)] ||
                      s.position[k] > spec.domain_max[static_cast<std::size_t>(k)]))
                     throw core::InputError(fmt::format(

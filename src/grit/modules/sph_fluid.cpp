@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "grit/boundary/wall_pressure.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -15,6 +16,13 @@ template <int Dim>
 SphModule<Dim>::SphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup) : state_(state), setup_(setup) {
     const auto& spec = setup.spec;
     fluid_.gravity = core::to_vec<Dim>(spec.gravity);
+    // Along a periodic axis the pressure is periodic too: the body force there is not balanced by a
+    // hydrostatic pressure gradient, so the hydrostatic parts of the density diffusion and of the wall
+    // pressure take only the components along open axes (all of g without periodic axes).
+    fluid_.hydrostatic_gravity = fluid_.gravity;
+    for (int k = 0; k < Dim; ++k)
+        if (setup.periodic_box.periodic[k]) fluid_.hydrostatic_gravity[k] = 0.0;
+    fluid_.periodic_box = setup.periodic_box;
     fluid_.density_diffusion = spec.density_diffusion;
     for (const auto& m : spec.materials) {
         fluid_.materials.push_back({m.sound_speed(), m.reference_density(), m.artificial_viscosity_alpha,
@@ -40,8 +48,8 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
         sph::update_pressure(ps, setup_.spec.materials, Phase::fluid, nullptr, porosity());
     }, true);
     pipeline.add(Hook::pre_force, "wall_pressure", [this, &ps] {
-        boundary::update_wall_pressure(ps, state_.neighbors.list(), setup_.kernel, fluid_.gravity,
-                                       setup_.spec.materials);
+        boundary::update_wall_pressure(ps, state_.neighbors.list(), setup_.kernel, fluid_.hydrostatic_gravity,
+                                       setup_.spec.materials, setup_.periodic_box);
     }, true);
     pipeline.add(Hook::pre_force, "sph_prepare", [this, &ps] {
         sph::prepare_sph_workspace(ps, workspace_);
@@ -77,7 +85,7 @@ template <int Dim>
 void SphModule<Dim>::update_neighbors(bool force) {
     const double skin = setup_.spec.neighbor_skin * setup_.smoothing_length;
     const double support = std::visit([](const auto& k) { return k.support(); }, setup_.kernel);
-    state_.neighbors.update(state_.particles, support + skin, skin, force);
+    state_.neighbors.update(state_.particles, support + skin, skin, force, setup_.periodic_box);
 }
 
 // Leap-frog (Liu & Liu 2003, the scheme of the first seed paper): positions at whole steps, velocity
@@ -124,19 +132,31 @@ void SphModule<Dim>::integrate_update() {
     const std::int32_t* ph = ps.phase();
     const std::int32_t* fixed = ps.fields().has("fixed") ? ps.fields().template get<std::int32_t>("fixed").data() : nullptr;
     const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
-    parallel::for_each(ps.size(), [&](Index i) {
-        if (ph[i] != fluid && ph[i] != solid) return;
-        rho_half[i] += drho[i] * kick;
-        // Between steps, velocity and density show the half-step state (outputs, diagnostics).
-        rho[i] = rho_half[i];
-        if (fixed && fixed[i]) {  // clamped: moves at its prescribed velocity
+    // Along periodic axes a particle leaving through a face comes back through the opposite one. The
+    // loop is compiled twice: the one without periodic axes is the loop as it was before them (a run-time
+    // test in it changed how the compiler fused x + v dt, and with it the last bits of every result).
+    const auto& box = setup_.periodic_box;
+    auto update = [&](auto periodic) {
+        parallel::for_each(ps.size(), [&](Index i) {
+            if (ph[i] != fluid && ph[i] != solid) return;
+            rho_half[i] += drho[i] * kick;
+            // Between steps, velocity and density show the half-step state (outputs, diagnostics).
+            rho[i] = rho_half[i];
+            if (fixed && fixed[i]) {  // clamped: moves at its prescribed velocity
+                x[i] += v_half[i] * dt;
+                if constexpr (decltype(periodic)::value) x[i] = box.wrap(x[i]);
+                return;
+            }
+            v_half[i] += a[i] * kick;
             x[i] += v_half[i] * dt;
-            return;
-        }
-        v_half[i] += a[i] * kick;
-        x[i] += v_half[i] * dt;
-        v[i] = v_half[i];
-    });
+            if constexpr (decltype(periodic)::value) x[i] = box.wrap(x[i]);
+            v[i] = v_half[i];
+        });
+    };
+    if (box.any())
+        update(std::true_type{});
+    else
+        update(std::false_type{});
 }
 
 template <int Dim>

@@ -1,6 +1,7 @@
 // Verlet neighbour lists in compressed rows, built from a cell grid over particles sorted by cell.
 // Each particle lists every other particle within cutoff + skin (full lists, for gather loops); the
-// lists stay valid until some particle has moved more than skin / 2.
+// lists stay valid until some particle has moved more than skin / 2. With periodic axes, pairs across
+// a periodic face are listed too (their distance is that of the nearest image).
 #pragma once
 
 #include <vector>
@@ -8,6 +9,7 @@
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
 #include "grit/neighbors/cell_grid.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 
 namespace grit::neighbors {
 
@@ -16,11 +18,14 @@ class NeighborList {
 public:
     using Vec = core::Vec<Dim>;
 
-    /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (a covering() grid:
-    /// x fastest, no periodic axes; cell_start from sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin).
-    /// With `phase`, pairs of two fixed wall particles are left out: nothing between them is computed.
+    /// Builds the lists for x[0..n), which must be sorted by the cells of `grid` (cell_start from
+    /// sort_by_cell after applying its order). `radius` is the list radius (cutoff + skin). Without
+    /// periodic axes `grid` is a covering() grid; with them (`box`), an over_box() grid of the same
+    /// periodic axes, cells of at least `radius`, and x[0..n) inside the box along them: cells wrap, and
+    /// distances are those of the nearest image. With `phase`, pairs of two fixed wall particles are left
+    /// out: nothing between them is computed.
     void build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index n,
-               double radius, const std::int32_t* phase = nullptr);
+               double radius, const std::int32_t* phase = nullptr, const PeriodicBox<Dim>& box = {});
 
     /// Neighbours of i: indices [begin(i), end(i)) into indices().
     Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
@@ -32,13 +37,14 @@ public:
     /// The positions the lists were built at (one per particle).
     const Vec* reference_positions() const noexcept { return reference_positions_.data(); }
 
-    /// Largest squared displacement of any particle since the last build.
-    double max_displacement2(const Vec* x, Index n) const;
+    /// Largest squared displacement of any particle since the last build (along periodic axes of `box`,
+    /// that of the nearest image: a particle wrapped across a face has moved by its step, not the period).
+    double max_displacement2(const Vec* x, Index n, const PeriodicBox<Dim>& box = {}) const;
 
 private:
-    template <class F>
+    template <class Image, class F>
     void scan(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index i,
-              double r2max, const std::int32_t* phase, F&& visit) const;
+              double r2max, const std::int32_t* phase, const Image& image, F&& visit) const;
 
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;

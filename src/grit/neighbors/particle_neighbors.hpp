@@ -1,6 +1,8 @@
 // The neighbour lists of an SPH particle set, with what keeps them valid: the cell grid and sort that
 // order the particles before each build, and the particle set's generation at the build (lists are
-// stale once particles were added, removed or reordered, or one has moved more than skin / 2).
+// stale once particles were added, removed or reordered, or one has moved more than skin / 2). With
+// periodic axes the grid is laid over the periodic box (CellGrid::over_box) and wraps, and
+// displacements are measured to the nearest image.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +11,8 @@
 #include "grit/io/hdf5_file.hpp"
 #include "grit/neighbors/cell_grid.hpp"
 #include "grit/neighbors/neighbor_list.hpp"
+#include "grit/neighbors/periodic_box.hpp"
+#include "grit/parallel/parallel.hpp"
 #include "grit/particles/sph_particles.hpp"
 
 namespace grit::neighbors {
@@ -21,15 +25,23 @@ public:
     /// Brings the lists up to date for `particles` with list radius `radius` (support + skin): when
     /// forced, when the set changed since the build, or when a particle has moved more than skin / 2,
     /// the particles are sorted by cell (every field) and the lists rebuilt. Returns true if rebuilt.
-    bool update(particles::SphParticles<Dim>& particles, double radius, double skin, bool force) {
+    /// With periodic axes in `box`, a rebuild first wraps every position into the box (particles an
+    /// inlet placed across a face).
+    bool update(particles::SphParticles<Dim>& particles, double radius, double skin, bool force,
+                const PeriodicBox<Dim>& box = {}) {
         const Index n = particles.size();
-        if (!force && valid_for(particles) && list_.max_displacement2(particles.position(), n) < 0.25 * skin * skin)
+        if (!force && valid_for(particles) &&
+            list_.max_displacement2(particles.position(), n, box) < 0.25 * skin * skin)
             return false;
+        if (box.any()) {
+            Vec* x = particles.position();
+            parallel::for_each(n, [&](Index i) { x[i] = box.wrap(x[i]); });
+        }
         // Sorting keeps neighbours close in memory.
-        grid_ = CellGrid<Dim>::covering(particles.position(), n, radius);
+        grid_ = make_grid(particles.position(), n, radius, box);
         sort_by_cell(grid_, particles.position(), n, order_, cell_start_);
         particles.gather(order_);
-        list_.build(grid_, cell_start_, particles.position(), n, radius, particles.phase());
+        list_.build(grid_, cell_start_, particles.position(), n, radius, particles.phase(), box);
         built_generation_ = particles.generation();
         ++builds_;
         return true;
@@ -53,7 +65,8 @@ public:
     }
     /// Rebuilds the lists of a loaded set from the positions they were built at: the particles are still
     /// in that build's cell order, so the grid, the order and the lists come out as they were.
-    void load(const io::Hdf5Group& group, const particles::SphParticles<Dim>& particles, double radius) {
+    void load(const io::Hdf5Group& group, const particles::SphParticles<Dim>& particles, double radius,
+              const PeriodicBox<Dim>& box = {}) {
         builds_ = static_cast<long>(group.read_int("builds"));
         built_generation_ = never;
         list_ = NeighborList<Dim>();
@@ -66,16 +79,23 @@ public:
         std::vector<Vec> reference(rows);
         for (std::size_t i = 0; i < rows; ++i)
             for (int k = 0; k < Dim; ++k) reference[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
-        grid_ = CellGrid<Dim>::covering(reference.data(), n, radius);
+        grid_ = make_grid(reference.data(), n, radius, box);
         sort_by_cell(grid_, reference.data(), n, order_, cell_start_);
         for (Index i = 0; i < n; ++i)
             if (order_[static_cast<std::size_t>(i)] != i)
                 throw io::Hdf5Error(group.path() + ": the particles are not in the order of their neighbour lists");
-        list_.build(grid_, cell_start_, reference.data(), n, radius, particles.phase());
+        list_.build(grid_, cell_start_, reference.data(), n, radius, particles.phase(), box);
         built_generation_ = particles.generation();
     }
 
 private:
+    // Without periodic axes, cubic cells over the particles; with them, the periodic axes of the box in
+    // whole cells of at least `radius` (the others over the particles).
+    static CellGrid<Dim> make_grid(const Vec* x, Index n, double radius, const PeriodicBox<Dim>& box) {
+        if (!box.any()) return CellGrid<Dim>::covering(x, n, radius);
+        return CellGrid<Dim>::over_box(box.periodic, box.lower, box.upper, x, n, radius);
+    }
+
     static constexpr std::uint64_t never = ~std::uint64_t{0};
     bool built_() const noexcept { return built_generation_ != never; }
 

@@ -11,6 +11,7 @@
 
 #include "grit/io/case_spec.hpp"
 #include "grit/io/hdf5_file.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 #include "grit/sim/pipeline.hpp"
 #include "grit/sim/state.hpp"
 #include "grit/sph/kernels.hpp"
@@ -43,6 +44,17 @@ struct OutputValue {
     }
 };
 
+/// The periodic box of a case: the axes of domain.periodic between domain.min and domain.max.
+template <int Dim>
+neighbors::PeriodicBox<Dim> periodic_box_of(const io::CaseSpec& spec) {
+    std::array<bool, Dim> axes{};
+    for (int k = 0; k < Dim; ++k)
+        axes[k] = static_cast<std::size_t>(k) < spec.periodic.size() && spec.periodic[static_cast<std::size_t>(k)];
+    const bool bounds = spec.domain_min.size() == Dim && spec.domain_max.size() == Dim;
+    return neighbors::PeriodicBox<Dim>::make(axes, bounds ? core::to_vec<Dim>(spec.domain_min) : core::Vec<Dim>::zero(),
+                                             bounds ? core::to_vec<Dim>(spec.domain_max) : core::Vec<Dim>::zero());
+}
+
 /// Set-up shared by the modules of a run, fixed for the run.
 template <int Dim>
 struct RunSetup {
@@ -51,6 +63,9 @@ struct RunSetup {
     double smoothing_length;  ///< h [m]
     const sph::Kernel<Dim>& kernel;
     double max_speed;         ///< faster is a blow-up [m/s]
+    /// The periodic axes of the SPH particles and the grains (domain.periodic); none: any() is false.
+    /// Every loop that forms x_a - x_b of two points takes its nearest image along them.
+    neighbors::PeriodicBox<Dim> periodic_box;
 };
 
 /// Where output files go (only when files are written).

@@ -82,17 +82,30 @@ std::string read_text(const std::filesystem::path& file) {
     return s.str();
 }
 
+constexpr const char* periodic_state_key = "domain.periodic";
+
+std::string periodic_axes(const io::CaseSpec& spec) {
+    std::string axes;
+    for (std::size_t k = 0; k < spec.periodic.size(); ++k)
+        if (spec.periodic[k]) axes += static_cast<char>('x' + k);
+    return axes;
+}
+
 // The keys a checkpoint's state depends on: a restart with other values is refused.
 std::vector<std::pair<std::string, std::string>> state_keys(const io::CaseSpec& spec) {
     std::string materials, grain_materials;
     for (const auto& m : spec.materials) materials += (materials.empty() ? "" : ", ") + m.name;
     for (const auto& m : spec.grain_materials) grain_materials += (grain_materials.empty() ? "" : ", ") + m.name;
-    return {{"simulation.dimension", std::to_string(spec.dimension)},
-            {"numerics.particle_spacing", fmt::format("{:.17g}", spec.particle_spacing)},
-            {"numerics.smoothing_ratio", fmt::format("{:.17g}", spec.smoothing_ratio)},
-            {"numerics.kernel", spec.kernel},
-            {"materials", materials},
-            {"grain materials", grain_materials}};
+    std::vector<std::pair<std::string, std::string>> keys = {
+        {"simulation.dimension", std::to_string(spec.dimension)},
+        {"numerics.particle_spacing", fmt::format("{:.17g}", spec.particle_spacing)},
+        {"numerics.smoothing_ratio", fmt::format("{:.17g}", spec.smoothing_ratio)},
+        {"numerics.kernel", spec.kernel},
+        {"materials", materials},
+        {"grain materials", grain_materials}};
+    // Only where some axis is periodic, so that the checkpoints of other cases stay as they were.
+    if (spec.any_periodic()) keys.emplace_back(periodic_state_key, periodic_axes(spec));
+    return keys;
 }
 
 // The step number of checkpoints/checkpoint_<step>.h5, or -1 for another name.
@@ -145,7 +158,8 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     : spec_(std::move(spec)),
       options_(std::move(options)),
       kernel_(sph::CubicSpline<Dim>(1.0)),
-      setup_{spec_, spec_.particle_spacing, spec_.smoothing_ratio * spec_.particle_spacing, kernel_, 0.0} {
+      setup_{spec_,   spec_.particle_spacing, spec_.smoothing_ratio * spec_.particle_spacing, kernel_, 0.0,
+             periodic_box_of<Dim>(spec_)} {
     if (spec_.dimension != Dim) throw std::logic_error("case dimension does not match the simulation");
     sph::make_kernel<Dim>(spec_.kernel, setup_.smoothing_length, kernel_);
     double fastest = 0.0;
@@ -159,9 +173,11 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     for (const auto& in : spec_.inlets) fastest = std::max(fastest, in.velocity);
     setup_.max_speed = spec_.max_speed > 0.0 ? spec_.max_speed : 2.0 * fastest;
 
+    has_sph_ = spec_.has_sph();
+    if (has_sph_) check_periodic_lengths();
+
     // The modules the case needs. Their order is the order of their stages within a hook point and of
     // their output columns; fields are registered (in this order) before any particle exists.
-    has_sph_ = spec_.has_sph();
     modules::SphModule<Dim>* sph = nullptr;
     if (has_sph_) {
         auto m = std::make_unique<modules::SphModule<Dim>>(state_, setup_);
@@ -184,6 +200,11 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
             throw core::InputError(fmt::format(
                 "key 'domain.min'/'domain.max': a {} particle at ({}) lies outside the domain; enlarge the domain",
                 phase_name(state_.particles.phase()[i]), fmt::join(std::vector<double>(x[i].c, x[i].c + Dim), ", ")));
+    if (setup_.periodic_box.any()) {
+        // Inside the closed box; along the periodic axes into [min, max) (a point on max is the one on min).
+        Vec* xw = state_.particles.position();
+        for (Index i = 0; i < state_.particles.size(); ++i) xw[i] = setup_.periodic_box.wrap(xw[i]);
+    }
 
     if (!spec_.grains.empty()) {
         // The grains module builds the grains the others register fields on; its step runs after
@@ -207,6 +228,25 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
 
 template <int Dim>
 Simulation<Dim>::~Simulation() = default;
+
+template <int Dim>
+void Simulation<Dim>::check_periodic_lengths() const {
+    // The neighbour grid divides a periodic axis into whole cells of at least the list radius and scans
+    // one cell either side: three cells at least, so that no pair is met twice.
+    const double skin = spec_.neighbor_skin * setup_.smoothing_length;
+    const double radius = std::visit([](const auto& k) { return k.support(); }, kernel_) + skin;
+    const char* axis = "xyz";
+    for (int k = 0; k < Dim; ++k) {
+        if (!setup_.periodic_box.periodic[k]) continue;
+        const double length = setup_.periodic_box.length(k);
+        if (std::floor(length / radius) < 3.0)
+            throw core::InputError(fmt::format(
+                "key '{}': the domain is {:.6g} m long along the periodic axis {}, less than three neighbour-list "
+                "radii (3 x {:.6g} m = {:.6g} m: kernel support + numerics.neighbor_skin); lengthen the domain "
+                "along {} or refine numerics.particle_spacing",
+                spec_.periodic_key, length, axis[k], radius, 3.0 * radius, axis[k]));
+    }
+}
 
 template <int Dim>
 void Simulation<Dim>::build_particles() {
@@ -511,12 +551,20 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
         if (case_name != spec_.name)
             throw core::InputError(fmt::format("{}: written by case '{}', not '{}'", where, case_name, spec_.name));
         for (const auto& [key, value] : state_keys(spec_)) {
-            const std::string saved = h5.read_string("state_key " + key);
+            const bool has = h5.has_attribute("state_key " + key);
+            // Before domain.periodic was recorded only grains could be periodic (dem.periodic): a grains-only
+            // checkpoint without the key continues in its (periodic) case.
+            if (!has && key == periodic_state_key && !has_sph_) continue;
+            const std::string saved = has ? h5.read_string("state_key " + key) : std::string("(none)");
             if (saved != value)
                 throw core::InputError(fmt::format("{}: {} was {} in the checkpointed run, now {}; the saved state "
                                                    "does not fit (start a fresh run instead)",
                                                    where, key, saved, value));
         }
+        if (!spec_.any_periodic() && h5.has_attribute(std::string("state_key ") + periodic_state_key))
+            throw core::InputError(fmt::format("{}: domain.periodic was [{}] in the checkpointed run, now none; the "
+                                               "saved state does not fit (start a fresh run instead)",
+                                               where, h5.read_string(std::string("state_key ") + periodic_state_key)));
         const auto run = h5.open_group("run");
         auto& clock = state_.clock;
         clock.time = run.read_double("time");
@@ -535,7 +583,7 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
         state_.particles.load(h5.open_group("particles"));
         const double skin = spec_.neighbor_skin * setup_.smoothing_length;
         const double support = std::visit([](const auto& k) { return k.support(); }, kernel_);
-        state_.neighbors.load(h5.open_group("neighbors"), state_.particles, support + skin);
+        state_.neighbors.load(h5.open_group("neighbors"), state_.particles, support + skin, setup_.periodic_box);
         if (state_.grains) state_.grains->load(h5.open_group("dem"));
         state_.impacts.load(h5.open_group("impacts"));
         const auto modules = h5.open_group("modules");

@@ -115,6 +115,7 @@ public:
 
 private:
     void build_particles();
+    void check_periodic_lengths() const;
     void check_health();
     void compute_time_step();
     void open_output(bool restart);

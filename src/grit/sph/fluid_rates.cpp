@@ -14,9 +14,12 @@ namespace {
 
 // Porous: the fluid is coupled to grains; `density` holds rho_bar = eps rho (eq. 21) and the density
 // diffusion acts on rho = rho_bar / eps, the density the pressure follows.
-template <int Dim, class K, bool Porous>
+// `image` takes x_a - x_b to its nearest periodic image; without periodic axes it is OpenImage, the
+// identity, and the loop compiles to what it was before periodic axes existed.
+template <int Dim, class K, bool Porous, class Image>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work, const double* porosity) {
+                      const FluidRateParameters<Dim>& prm, const SphWorkspace& work, const double* porosity,
+                      const Image image) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
@@ -37,6 +40,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const double eps_h2 = 0.01 * h * h;  // regularisation of eqs. (25) and (27)
     const double delta = prm.density_diffusion;
     const Vec g = prm.gravity;
+    const Vec g_hydrostatic = prm.hydrostatic_gravity;
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     const auto solid = static_cast<std::int32_t>(Phase::solid);
 
@@ -59,7 +63,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 #pragma omp simd reduction(+ : dv[:Dim], continuity, diffusion)
         for (Index k = first; k < last; ++k) {
             const Index b = nbr[k];
-            const Vec xab = xa - x[b];
+            const Vec xab = image(xa - x[b]);
             const double r2 = core::norm2(xab);
             // Pairs in the list's skin beyond the support get f = 0 and add nothing; testing for
             // them would cost a mispredicted branch, so they go through the same arithmetic.
@@ -89,7 +93,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 
             // Density diffusion between fluid particles only, less its hydrostatic part.
             const double fluid_b = phase[b] == fluid ? 1.0 : 0.0;
-            const double hydrostatic = hydrostatic_scale * core::dot(g, xab);  // rho^H_a - rho^H_b
+            const double hydrostatic = hydrostatic_scale * core::dot(g_hydrostatic, xab);  // rho^H_a - rho^H_b
             const double rho_b_true = Porous ? rho[b] / porosity[b] : rho[b];
             diffusion += fluid_b * volume_b * ((rho_a_true - rho_b_true) - hydrostatic) * r2 * f * inv_r2;
         }
@@ -126,12 +130,15 @@ void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbor
                          const SphWorkspace& workspace, const double* porosity) {
     std::visit(
         [&](const auto& k) {
-            if (porosity)
-                fluid_rates_loop<Dim, std::decay_t<decltype(k)>, true>(particles, neighbors, k, parameters, workspace,
-                                                                         porosity);
-            else
-                fluid_rates_loop<Dim, std::decay_t<decltype(k)>, false>(particles, neighbors, k, parameters, workspace,
-                                                                          nullptr);
+            using KernelType = std::decay_t<decltype(k)>;
+            neighbors::with_image(parameters.periodic_box, [&](const auto image) {
+                if (porosity)
+                    fluid_rates_loop<Dim, KernelType, true>(particles, neighbors, k, parameters, workspace, porosity,
+                                                            image);
+                else
+                    fluid_rates_loop<Dim, KernelType, false>(particles, neighbors, k, parameters, workspace, nullptr,
+                                                             image);
+            });
         },
         kernel);
 }

@@ -7,6 +7,7 @@
 
 #include "grit/core/vec.hpp"
 #include "grit/neighbors/neighbor_list.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
 #include "grit/sph/kernels.hpp"
 #include "grit/sph/pair_coefficients.hpp"
@@ -17,6 +18,11 @@ namespace grit::sph {
 template <int Dim>
 struct FluidRateParameters {
     core::Vec<Dim> gravity = core::Vec<Dim>::zero();  ///< [m/s^2]
+    /// The part of gravity a hydrostatic pressure balances, for the hydrostatic correction of the density
+    /// diffusion: gravity without its components along periodic axes.
+    core::Vec<Dim> hydrostatic_gravity = core::Vec<Dim>::zero();
+    /// Periodic axes: pairs across a face are listed, and x_a - x_b is taken to its nearest image.
+    neighbors::PeriodicBox<Dim> periodic_box;
     /// delta of the density-diffusion term (Molteni & Colagrossi 2009 with the hydrostatic correction
     /// of Fourtakas et al. 2019); 0 switches it off.
     double density_diffusion = 0.0;

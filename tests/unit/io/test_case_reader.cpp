@@ -533,6 +533,38 @@ TEST_F(CaseReaderTest, GrainErrorsNameKeyValueAndReason) {
     expect_error(grains_2d, {"grains[0].colour=red"}, {"grains[0].colour"});
 }
 
+// domain.periodic: the periodic axes of the SPH particles and the grains alike; dem.periodic is its older
+// spelling, and both given must agree. Solids and outlets across a periodic face are refused.
+TEST_F(CaseReaderTest, PeriodicAxes) {
+    EXPECT_FALSE(read_ok(minimal_2d).any_periodic());
+    const CaseSpec c = read_ok(minimal_2d, {"domain.periodic=[\"x\"]"});
+    EXPECT_EQ(c.periodic, (std::vector<bool>{true, false}));
+    EXPECT_EQ(c.periodic_key, "domain.periodic");
+    const CaseSpec g = read_ok(grains_2d, {"dem.periodic=[\"x\"]"});
+    EXPECT_EQ(g.periodic, (std::vector<bool>{true, false}));
+    EXPECT_EQ(g.periodic_key, "dem.periodic");
+    EXPECT_EQ(read_ok(grains_2d, {"dem.periodic=[\"y\"]", "domain.periodic=[\"y\"]"}).periodic,
+              (std::vector<bool>{false, true}));
+    expect_error(grains_2d, {"dem.periodic=[\"x\"]", "domain.periodic=[\"x\", \"y\"]"},
+                 {"'domain.periodic' = [\"x\", \"y\"]", "'dem.periodic' = [\"x\"]", "differ"});
+    expect_error(grains_2d, {"dem.periodic=[\"x\"]", "domain.periodic=[]"}, {"domain.periodic", "differ"});
+    expect_error(minimal_2d, {"domain.periodic=[\"z\"]"}, {"domain.periodic", "\"z\"", "names axes \"x\", \"y\""});
+    expect_error(minimal_2d, {"domain.periodic=\"x\""}, {"domain.periodic", "array of strings"});
+    // An outlet inside the period, or spanning all of it, is fine; one across a face is refused.
+    const std::string outlet = "\n[[outlet]]\nmin = [0.5, -0.1]\nmax = [0.6, 0.0]\n";
+    EXPECT_TRUE(read_ok(minimal_2d + outlet, {"domain.periodic=[\"x\"]"}).any_periodic());
+    EXPECT_TRUE(read_ok(minimal_2d + outlet, {"domain.periodic=[\"x\"]", "outlet[0].min=[-0.2, -0.1]",
+                                              "outlet[0].max=[0.7, 0.0]"})
+                    .any_periodic());
+    expect_error(minimal_2d + outlet, {"domain.periodic=[\"x\"]", "outlet[0].max=[0.7, 0.0]"},
+                 {"outlet[0].min", "crosses a periodic face", "along x"});
+    // The period must hold whole particle spacings (0.75 m / 0.015625 m = 48).
+    expect_error(minimal_2d, {"domain.periodic=[\"x\"]", "domain.max=[0.63, 0.5]"},
+                 {"domain.max", "not a whole number", "periodic face"});
+    expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases" / "elastic_impact_2d" / "case.toml",
+                      {"domain.periodic=[\"x\"]"}, {"domain.periodic", "[\"x\"]", "solid[0]", "not support solids"});
+}
+
 // Brittle solids (JH-2): the shipped compression case, its defaults, and errors naming key and reason.
 TEST_F(CaseReaderTest, BrittleSolidKeysAndErrors) {
     const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "compression_sandstone_2d" / "case.toml";
