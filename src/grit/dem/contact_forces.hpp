@@ -208,6 +208,7 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
     const std::uint8_t* touching = scratch.touching.data();
     constexpr double infinite = std::numeric_limits<double>::infinity();
     const bool kick = half_kick != 0.0;
+    const std::int32_t* fixed = fixed_flags(std::as_const(grains));
     for_each_grain(grains.size(), [&](Index i) {
         Vec f = force[i];
         Spin<Dim> t = torque[i];
@@ -242,7 +243,7 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
         }
         force[i] = f;
         torque[i] = t;
-        if (kick) {
+        if (kick && !(fixed && fixed[i])) {
             v[i] += f * (half_kick / mass[i]);
             w[i] += t * (half_kick / inertia[i]);
         }

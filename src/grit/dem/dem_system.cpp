@@ -160,7 +160,10 @@ double DemSystem<Dim>::stable_time_step(double impact_speed) const {
     const Index n = grains_.size();
     const double* r = grains_.radius();
     const std::int32_t* mat = grains_.material();
+    const std::int32_t* fixed = fixed_flags(grains_);
     return min_over_grains(n, 1e300, [&](Index i) {
+        // A fixed grain does not move: its contacts set no step (a free grain touching it sets its own).
+        if (fixed && fixed[i]) return 1e300;
         const GrainMaterial& m = materials_[static_cast<std::size_t>(mat[i])];
         // The sphere's mass in 2D too: a disc's contacts are the sphere's (contact_forces.hpp).
         if (std::holds_alternative<LinearSpringDashpot>(law_)) return linear_time_step(m, r[i]);

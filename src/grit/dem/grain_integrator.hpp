@@ -16,7 +16,8 @@
 namespace grit::dem {
 
 /// Half kick of grain i: v += dt/2 F/m and w += dt/2 T/I (eq. 1; spheres and discs have isotropic
-/// inertia, so the gyroscopic term of the second paper's eq. 10 vanishes).
+/// inertia, so the gyroscopic term of the second paper's eq. 10 vanishes). Fixed grains (the `fixed`
+/// field, [[grains]].fixed) keep their zero velocity, so the drift does not move them either.
 template <int Dim>
 struct GrainKick {
     core::Vec<Dim>* v;
@@ -25,12 +26,14 @@ struct GrainKick {
     const Spin<Dim>* t;
     const double* m;
     const double* inertia;
+    const std::int32_t* fixed;  ///< null when no grain is fixed
 
     explicit GrainKick(GrainSet<Dim>& grains)
         : v(grains.velocity()), w(grains.angular_velocity()), f(std::as_const(grains).force()),
           t(std::as_const(grains).torque()), m(std::as_const(grains).mass()),
-          inertia(std::as_const(grains).inertia()) {}
+          inertia(std::as_const(grains).inertia()), fixed(fixed_flags(std::as_const(grains))) {}
     void operator()(Index i, double half_dt) const noexcept {
+        if (fixed && fixed[i]) return;
         v[i] += f[i] * (half_dt / m[i]);
         w[i] += t[i] * (half_dt / inertia[i]);
     }

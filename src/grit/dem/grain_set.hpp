@@ -165,4 +165,11 @@ private:
     std::int32_t next_id_ = 0;
 };
 
+/// The `fixed` flags of the grains (1: held in place, [[grains]].fixed), or null when no grain is fixed
+/// (the field is registered only by cases with fixed grains, so other cases' outputs do not change).
+template <int Dim>
+const std::int32_t* fixed_flags(const GrainSet<Dim>& grains) {
+    return grains.fields().has("fixed") ? grains.fields().template get<std::int32_t>("fixed").data() : nullptr;
+}
+
 }  // namespace grit::dem

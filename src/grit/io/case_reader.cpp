@@ -825,6 +825,13 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         }
         b.seed = static_cast<std::uint64_t>(g.integer_or("seed", 1, 0, 2147483647));
         b.velocity = g.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+        b.fixed = g.flag_or("fixed", false);
+        if (b.fixed)
+            for (double v : b.velocity)
+                if (v != 0.0)
+                    g.fail("velocity", fmt::format("= {}: fixed grains (fixed = true) do not move; remove the velocity "
+                                                   "or the fixed flag",
+                                                   fmt::join(b.velocity, ", ")));
         c.grains.push_back(std::move(b));
     }
     for (const Section& w : top.sections("grain_wall")) {

@@ -84,6 +84,7 @@ struct GrainBlockSpec {
     dem::SizeDistribution size = dem::FixedSize{};  ///< diameters
     std::uint64_t seed = 1;              ///< of the size and position draws
     std::vector<double> velocity;        ///< [m/s]
+    bool fixed = false;                  ///< grains held in place (a packed bed): never moved
 };
 
 /// A plane wall for grains: a point on it and the normal towards the grains.

@@ -181,6 +181,65 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
     }
     out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed()).summary_only());
     out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count())).series_only());
+    bed_values(out);
+}
+
+// A packed bed: the fixed grains and the fluid among them, the flow along the body force e = g / |g|.
+// The bed is the box the fixed grains span (their centres +- radius) along open axes, the whole period
+// along periodic ones. Over the fluid particles inside it, each of mixture volume V_a = m_a / rho_bar_a,
+//   superficial velocity  U = sum_a V_a eps_a (v_a . e) / sum_a V_a   (the flow rate per bed section),
+//   bed porosity          eps_bed = 1 - sum_i V_i / V_bed,
+//   pressure gradient     the fluid force on the bed per unit fluid volume, sum_i F_i . e / (eps_bed V_bed).
+// With a body force driving the flow, the steady fluid's balance eps rho g = beta u makes that gradient
+// rho_f |g|, the pressure drop an equal bed would need without the body force (docs/validation.md).
+template <int Dim>
+void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
+    using sim::OutputValue;
+    const auto& grains = state_.grains->grains();
+    const std::int32_t* fixed = dem::fixed_flags(grains);
+    const double g = core::norm(gravity_);
+    if (!fixed || !(g > 0.0)) return;
+    const core::Vec<Dim> e = gravity_ * (1.0 / g);
+    const auto& box = setup_.periodic_box;
+    core::Vec<Dim> lo = core::Vec<Dim>::zero(), hi = core::Vec<Dim>::zero();
+    for (int k = 0; k < Dim; ++k) {
+        lo[k] = box.periodic[k] ? box.lower[k] : 1e300;
+        hi[k] = box.periodic[k] ? box.upper[k] : -1e300;
+    }
+    double solid = 0.0, force = 0.0;
+    const auto* fluid_force = grains.fields().template get<core::Vec<Dim>>("fluid_force").data();
+    for (Index i = 0; i < grains.size(); ++i) {
+        if (!fixed[i]) continue;
+        const double r = grains.radius()[i];
+        for (int k = 0; k < Dim; ++k)
+            if (!box.periodic[k]) {
+                lo[k] = std::min(lo[k], grains.position()[i][k] - r);
+                hi[k] = std::max(hi[k], grains.position()[i][k] + r);
+            }
+        solid += coupling::grain_volume<Dim>(r);
+        force += core::dot(fluid_force[i], e);
+    }
+    double bed_volume = 1.0;
+    for (int k = 0; k < Dim; ++k) bed_volume *= hi[k] - lo[k];
+    if (!(bed_volume > 0.0)) return;
+    const auto& ps = state_.particles;
+    const double* porosity = ps.fields().template get<double>("porosity").data();
+    const std::int32_t* phase = ps.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    double flux = 0.0, volume = 0.0;
+    for (Index a = 0; a < ps.size(); ++a) {
+        if (phase[a] != fluid) continue;
+        bool inside = true;
+        for (int k = 0; k < Dim; ++k) inside &= ps.position()[a][k] >= lo[k] && ps.position()[a][k] <= hi[k];
+        if (!inside) continue;
+        const double v = ps.mass()[a] / ps.density()[a];
+        flux += v * porosity[a] * core::dot(ps.velocity()[a], e);
+        volume += v;
+    }
+    const double eps = 1.0 - solid / bed_volume;
+    out.push_back(OutputValue::real("superficial_velocity", volume > 0.0 ? flux / volume : 0.0));
+    out.push_back(OutputValue::real("pressure_gradient", force / (eps * bed_volume)));
+    out.push_back(OutputValue::real("bed_porosity", eps));
 }
 
 template class CouplingModule<2>;

@@ -29,6 +29,8 @@ private:
     void update_porosity();
     /// The force exchange, after the SPH sums and before the grains' step.
     void exchange();
+    /// superficial_velocity, pressure_gradient and bed_porosity of the fixed grains (a packed bed).
+    void bed_values(std::vector<sim::OutputValue>& out) const;
 
     sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;

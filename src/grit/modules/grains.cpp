@@ -44,6 +44,9 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
         system.add_wall({to_vec<Dim>(w.point), to_vec<Dim>(w.normal), w.material});
         wall_names_.push_back(w.name);
     }
+    bool any_fixed = false;
+    for (const auto& b : spec.grains) any_fixed |= b.fixed;
+    if (any_fixed) system.grains().fields().template add<std::int32_t>("fixed", 0, true);
     for (const auto& b : spec.grains) {
         std::vector<dem::GrainSeed<Dim>> seeds;
         if (b.arrangement == "single") {
@@ -67,7 +70,8 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
                     throw core::InputError(fmt::format(
                         "{}: a grain at ({}) lies outside the domain (domain.min/domain.max); enlarge the domain",
                         b.key, fmt::join(std::vector<double>(s.position.c, s.position.c + Dim), ", ")));
-            system.add_grain(s.position, 0.5 * s.diameter, b.material, to_vec<Dim>(b.velocity));
+            const Index i = system.add_grain(s.position, 0.5 * s.diameter, b.material, to_vec<Dim>(b.velocity));
+            if (b.fixed) system.grains().fields().template get<std::int32_t>("fixed")[i] = 1;
         }
     }
 }
