@@ -28,7 +28,7 @@ test-sanitize: deps
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j 1 -R '^(Conservation\.|CouplingConservation\.FreeBlobWithGrainsMomentum2D|Determinism\.|GrainImpact\.Momentum)'
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j 1 -R '^(Conservation\.|CouplingConservation\.(FreeBlob|PeriodicBox)WithGrainsMomentum2D|PackedBed\.|Determinism\.|GrainImpact\.Momentum)'
 
 demo: build
 	./$(BUILD)/grit run cases/demo.toml --out output/demo

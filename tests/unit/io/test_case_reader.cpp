@@ -517,6 +517,15 @@ TEST_F(CaseReaderTest, GrainSizeDistributionAndInlineMaterial) {
     EXPECT_DOUBLE_EQ(c.grain_materials[0].density, 2650.0);
 }
 
+TEST_F(CaseReaderTest, FixedGrainsTakeNoVelocity) {
+    const CaseSpec c = read_ok(grains_2d, {"grains[0].fixed=true"});
+    ASSERT_EQ(c.grains.size(), 1u);
+    EXPECT_TRUE(c.grains[0].fixed);
+    EXPECT_FALSE(read_ok(grains_2d).grains[0].fixed);
+    expect_error(grains_2d, {"grains[0].fixed=true", "grains[0].velocity=[0.0, -1.0]"},
+                 {"grains[0].velocity", "0, -1", "fixed grains"});
+}
+
 TEST_F(CaseReaderTest, GrainErrorsNameKeyValueAndReason) {
     expect_error(grains_2d, {"grains[0].material=diamond"}, {"grains[0].material", "\"diamond\"", "garnet"});
     expect_error(grains_2d, {"dem.contact_law=jkr"}, {"dem.contact_law", "\"jkr\"", "\"linear\", \"hertz\""});
