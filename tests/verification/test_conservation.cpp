@@ -14,18 +14,9 @@ namespace {
 template <int Dim>
 void free_blob(const std::vector<std::string>& geometry) {
     // The hydrostatic case's material and numerics, with a free disc of fluid instead of the tank.
-    std::vector<std::string> overrides = {"physics.gravity=[" + std::string(Dim == 2 ? "0.0, 0.0" : "0.0, 0.0, 0.0") + "]",
-                                          "time.end=0.02"};
+    std::vector<std::string> overrides = {"time.end=0.02"};
     overrides.insert(overrides.end(), geometry.begin(), geometry.end());
-    auto spec = load_case(Dim == 2 ? "hydrostatic_2d/case.toml" : "hydrostatic_3d/case.toml", overrides);
-    spec.walls.clear();
-    spec.probes.clear();
-    spec.fluids[0].hydrostatic = false;
-    spec.fluids[0].shape.kind = "disc";
-    spec.fluids[0].shape.center.assign(Dim, 0.1);
-    spec.fluids[0].shape.radius = 0.06;
-    spec.domain_min.assign(Dim, -1.0);
-    spec.domain_max.assign(Dim, 1.0);
+    const auto spec = grit::testing::free_blob_case<Dim>(overrides);
     grit::sim::Simulation<Dim> sim(spec, in_memory());
     auto& ps = sim.particles();
     // A swirling, compressing, uneven velocity field.

@@ -16,18 +16,9 @@ namespace {
 
 template <int Dim>
 grit::io::CaseSpec blob_with_grains() {
-    std::vector<std::string> overrides = {
-        "physics.gravity=[" + std::string(Dim == 2 ? "0.0, 0.0" : "0.0, 0.0, 0.0") + "]", "time.end=0.004"};
+    std::vector<std::string> overrides = {"time.end=0.004"};
     if (Dim == 3) overrides.push_back("numerics.particle_spacing=0.012");
-    auto spec = load_case(Dim == 2 ? "hydrostatic_2d/case.toml" : "hydrostatic_3d/case.toml", overrides);
-    spec.walls.clear();
-    spec.probes.clear();
-    spec.fluids[0].hydrostatic = false;
-    spec.fluids[0].shape.kind = "disc";
-    spec.fluids[0].shape.center.assign(Dim, 0.1);
-    spec.fluids[0].shape.radius = 0.06;
-    spec.domain_min.assign(Dim, -1.0);
-    spec.domain_max.assign(Dim, 1.0);
+    auto spec = grit::testing::free_blob_case<Dim>(overrides);
     spec.materials[0].dynamic_viscosity = 1e-3;
     // Garnet grains of 0.8 fluid spacings, moving across the swirling fluid.
     auto garnet = grit::dem::garnet();

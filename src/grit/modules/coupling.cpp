@@ -162,22 +162,19 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
         }
     out.push_back(OutputValue::real("grain_porosity", eps_count > 0.0 ? eps_sum / eps_count
                                                                       : std::numeric_limits<double>::quiet_NaN()));
-    double speed = 0.0, grain_mass = 0.0;
+    const double g = core::norm(gravity_);
+    const core::Vec<Dim> down = g > 0.0 ? gravity_ * (1.0 / g) : core::Vec<Dim>::zero();
+    double speed = 0.0, settling = 0.0, grain_mass = 0.0;  // mass-weighted sums
     for (Index i = 0; i < grains.size(); ++i) {
-        speed += grains.mass()[i] * core::norm(grains.velocity()[i]);
-        grain_mass += grains.mass()[i];
+        const double m = grains.mass()[i];
+        speed += m * core::norm(grains.velocity()[i]);
+        settling += m * core::dot(grains.velocity()[i], down);
+        grain_mass += m;
     }
     out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0).series_only());
-    const double g = core::norm(gravity_);
     if (g > 0.0 && grains.size() > 0) {
-        const core::Vec<Dim> down = gravity_ * (1.0 / g);
-        double mv = 0.0, mass = 0.0;
-        for (Index i = 0; i < grains.size(); ++i) {
-            mv += grains.mass()[i] * core::dot(grains.velocity()[i], down);
-            mass += grains.mass()[i];
-        }
-        out.push_back(OutputValue::real("settling_velocity", mv / mass).series_only());
-        out.push_back(OutputValue::real("terminal_velocity", mv / mass).summary_only());
+        out.push_back(OutputValue::real("settling_velocity", settling / grain_mass).series_only());
+        out.push_back(OutputValue::real("terminal_velocity", settling / grain_mass).summary_only());
     }
     out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed()).summary_only());
     out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count())).series_only());
