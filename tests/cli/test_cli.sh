@@ -172,6 +172,18 @@ else
     fail "grit check cases/hydrostatic_2d/case.toml exits 0" "exit $RC: $(cat "$W/stderr")"
 fi
 
+# Every case file shipped in cases/ reads and checks: a case a user copies must not be broken.
+bad_cases=()
+while IFS= read -r -d '' c; do
+    grit check "$c"
+    [[ $RC -eq 0 ]] || bad_cases+=("${c#"$ROOT"/}: $(head -n 1 "$W/stderr")")
+done < <(find "$ROOT/cases" -name '*.toml' -print0 | sort -z)
+if [[ ${#bad_cases[@]} -eq 0 ]]; then
+    pass "grit check passes every case file in cases/"
+else
+    fail "grit check passes every case file in cases/" "${bad_cases[*]}"
+fi
+
 # --- bad input: exit code 2, one line naming the key (or file) and the reason, nothing written --------
 
 sed 's/^smoothing_ratio *=/smoothing_ratoi =/' "$HYDRO" >"$W/typo.toml"
