@@ -187,7 +187,8 @@ fi
 # --- bad input: exit code 2, one line naming the key (or file) and the reason, nothing written --------
 
 sed 's/^smoothing_ratio *=/smoothing_ratoi =/' "$HYDRO" >"$W/typo.toml"
-expect_input_error "unknown key in the file" "numerics.smoothing_ratoi" "unknown key" -- run "$W/typo.toml"
+expect_input_error "unknown key in the file, with a suggestion" "numerics.smoothing_ratoi" "unknown key" \
+    "did you mean 'smoothing_ratio'?" -- run "$W/typo.toml"
 expect_input_error "unknown key through --set" "numerics.particle_spacng" "unknown key" -- \
     run "$HYDRO" --set numerics.particle_spacng=0.02
 expect_input_error "negative spacing" "numerics.particle_spacing" "-0.01" "must be positive" -- \

@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "grit/core/error.hpp"
+#include "grit/core/spelling.hpp"
 #include "grit/core/types.hpp"
 #include "grit/io/particle_budget.hpp"
 #include "grit/material/library.hpp"
@@ -59,16 +60,27 @@ NumberCheck in_range(double lo, double hi) {
     };
 }
 
+/// The keys a reading asked for (valid keys, present or not) and the ones it found and used, as full
+/// paths ("numerics.kernel", "grains[1].velocity"): what is left in the file is unknown, and the asked
+/// keys of its table are what it may have meant.
+struct KeyRecord {
+    std::set<std::string> used;
+    std::set<std::string> asked;
+};
+
 class Section {
 public:
-    Section(std::set<std::string>* used, const toml::table* table, std::string path)
-        : used_(used), table_(table), path_(std::move(path)) {}
+    Section(KeyRecord* keys, const toml::table* table, std::string path)
+        : keys_(keys), table_(table), path_(std::move(path)) {}
 
     const std::string& path() const { return path_; }
     std::string key_path(std::string_view key) const {
         return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
     }
-    bool has(std::string_view key) const { return table_ && table_->contains(key); }
+    bool has(std::string_view key) const {
+        keys_->asked.insert(key_path(key));
+        return table_ && table_->contains(key);
+    }
 
     [[noreturn]] void fail(std::string_view key, std::string_view reason) const {
         const toml::node* n = node(key);
@@ -88,7 +100,7 @@ public:
         return v;
     }
     double number(std::string_view key, const NumberCheck& check = {}) const {
-        if (!has(key)) fail(key, required_message());
+        if (!has(key)) fail(key, required_message(key));
         return *maybe_number(key, check);
     }
     double number_or(std::string_view key, double fallback, const NumberCheck& check = {}) const {
@@ -109,7 +121,7 @@ public:
         return n->value<std::string>().value();
     }
     std::string text(std::string_view key) const {
-        if (!has(key)) fail(key, required_message());
+        if (!has(key)) fail(key, required_message(key));
         return *maybe_text(key);
     }
     std::string text_or(std::string_view key, std::string fallback) const {
@@ -162,9 +174,9 @@ public:
     }
     Section section(std::string_view key) const {
         const toml::node* n = take(key);
-        if (!n) return Section(used_, nullptr, key_path(key));
+        if (!n) return Section(keys_, nullptr, key_path(key));
         if (!n->is_table()) fail(key, "must be a table");
-        return Section(used_, n->as_table(), key_path(key));
+        return Section(keys_, n->as_table(), key_path(key));
     }
     std::vector<Section> sections(std::string_view key) const {
         std::vector<Section> out;
@@ -175,7 +187,7 @@ public:
         for (std::size_t i = 0; i < a->size(); ++i) {
             const toml::table* t = (*a)[i].as_table();
             if (!t) fail(key, fmt::format("must be an array of tables ([[{}]])", key));
-            out.emplace_back(used_, t, fmt::format("{}[{}]", key_path(key), i));
+            out.emplace_back(keys_, t, fmt::format("{}[{}]", key_path(key), i));
         }
         return out;
     }
@@ -187,38 +199,55 @@ public:
     }
 
 private:
-    /// "is required", naming the keys of this table not read so far (a misspelt key is likely one).
-    std::string required_message() const {
-        std::string others;
+    /// "is required", and the key of this table that looks like a misspelling of it, if one does.
+    std::string required_message(std::string_view key) const {
+        std::vector<std::string> unread;
         if (table_)
             for (const auto& [k, v] : *table_)
-                if (!used_->count(key_path(k.str()))) others += (others.empty() ? "" : ", ") + std::string(k.str());
-        return others.empty() ? "is required" : "is required (not recognised here: " + others + ")";
+                if (!keys_->used.count(key_path(k.str()))) unread.emplace_back(k.str());
+        for (const auto& k : unread)
+            if (core::closest_spelling(k, {std::string(key)}))
+                return fmt::format("is required (the file has '{}': did you mean '{}'?)", key_path(k), key);
+        return "is required";
     }
     const toml::node* node(std::string_view key) const { return table_ ? table_->get(key) : nullptr; }
     const toml::node* take(std::string_view key) const {
         const toml::node* n = node(key);
-        if (n) used_->insert(key_path(key));
+        keys_->asked.insert(key_path(key));
+        if (n) keys_->used.insert(key_path(key));
         return n;
     }
 
-    std::set<std::string>* used_;
+    KeyRecord* keys_;
     const toml::table* table_;
     std::string path_;
 };
 
-void report_unknown(const toml::table& table, const std::string& prefix, const std::set<std::string>& used) {
+/// The valid keys of the table at `prefix` that the reading asked for ("" is the top level).
+std::vector<std::string> asked_keys(const KeyRecord& keys, const std::string& prefix) {
+    std::vector<std::string> out;
+    const std::string head = prefix.empty() ? "" : prefix + ".";
+    for (const auto& path : keys.asked) {
+        if (path.compare(0, head.size(), head) != 0) continue;
+        const std::string rest = path.substr(head.size());
+        if (rest.find_first_of(".[") == std::string::npos) out.push_back(rest);
+    }
+    return out;
+}
+
+void report_unknown(const toml::table& table, const std::string& prefix, const KeyRecord& keys) {
     for (const auto& [k, v] : table) {
         const std::string path = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
-        if (!used.count(path)) {
-            if (v.is_table())
-                throw InputError(fmt::format("key '{}': unknown key (a table; misspelt, or not valid here)", path));
-            throw InputError(fmt::format("key '{}' = {}: unknown key (misspelt, or not valid here)", path, repr(v)));
+        if (!keys.used.count(path)) {
+            const auto nearest = core::closest_spelling(k.str(), asked_keys(keys, prefix));
+            const std::string why = nearest ? fmt::format("did you mean '{}'?", *nearest) : "misspelt, or not valid here";
+            if (v.is_table()) throw InputError(fmt::format("key '{}': unknown key (a table; {})", path, why));
+            throw InputError(fmt::format("key '{}' = {}: unknown key ({})", path, repr(v), why));
         }
-        if (const toml::table* t = v.as_table()) report_unknown(*t, path, used);
+        if (const toml::table* t = v.as_table()) report_unknown(*t, path, keys);
         if (const toml::array* a = v.as_array())
             for (std::size_t i = 0; i < a->size(); ++i)
-                if (const toml::table* t = (*a)[i].as_table()) report_unknown(*t, fmt::format("{}[{}]", path, i), used);
+                if (const toml::table* t = (*a)[i].as_table()) report_unknown(*t, fmt::format("{}[{}]", path, i), keys);
     }
 }
 
@@ -643,8 +672,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     }
     for (const auto& o : overrides) apply_override(root, o);
 
-    std::set<std::string> used;
-    const Section top(&used, &root, "");
+    KeyRecord keys;
+    const Section top(&keys, &root, "");
     CaseSpec c;
     c.source = file;
     c.name = file.stem().string() == "case" ? file.parent_path().filename().string() : file.stem().string();
@@ -889,7 +918,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
 
     if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
         throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]] or [[grains]]");
-    report_unknown(root, "", used);
+    report_unknown(root, "", keys);
     // Last, once everything else is valid: refuse a case too big to allocate.
     check_particle_budget(c);
     return c;

@@ -143,6 +143,16 @@ protected:
     void expect_error(const std::string& text, const Overrides& overrides, const std::vector<std::string>& parts) const {
         expect_error_file(write(text), overrides, parts);
     }
+    /// The message of the InputError read_case throws on `text` (empty, and a failure, if none).
+    std::string error_of(const std::string& text, const Overrides& overrides) const {
+        try {
+            (void)read_case(write(text), overrides);
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        ADD_FAILURE() << "no InputError thrown";
+        return {};
+    }
 
     fs::path dir_;
 };
@@ -352,24 +362,32 @@ TEST_F(CaseReaderTest, OverrideBooleanAndInteger) {
 // Bad input: InputError naming the key (or file), the value and the reason
 
 TEST_F(CaseReaderTest, UnknownTopLevelKey) {
-    expect_error(minimal_2d + "\n[solver]\niterations = 3\n", {}, {"'solver'", "unknown key"});
+    expect_error(minimal_2d + "\n[solver]\niterations = 3\n", {}, {"'solver'", "unknown key", "not valid here"});
     expect_error("speed = 3\n" + minimal_2d, {}, {"'speed'", "unknown key"});
+    // A misspelt table is offered the nearest valid one.
+    expect_error(minimal_2d + "\n[outptu]\nx = 1\n", {}, {"'outptu'", "unknown key", "did you mean 'output'?"});
 }
 
 TEST_F(CaseReaderTest, UnknownNestedKey) {
     // A misspelt optional key next to the right ones.
     expect_error(replaced(minimal_2d, "particle_spacing = 0.015625", "particle_spacing = 0.015625\nsmoothing_ratoi = 1.3"),
-                 {}, {"numerics.smoothing_ratoi", "unknown key"});
+                 {}, {"numerics.smoothing_ratoi", "unknown key", "did you mean 'smoothing_ratio'?"});
     // The same typo through --set.
-    expect_error(minimal_2d, {"numerics.particle_spacng=0.02"}, {"numerics.particle_spacng", "unknown key"});
+    expect_error(minimal_2d, {"numerics.particle_spacng=0.02"},
+                 {"numerics.particle_spacng", "unknown key", "did you mean 'particle_spacing'?"});
     // Misspelt keys inside arrays of tables are found too.
-    expect_error(replaced(minimal_2d, "layers = 2", "layers = 2\nlayer = 3"), {}, {"wall[0].layer", "unknown key"});
+    expect_error(replaced(minimal_2d, "layers = 2", "layers = 2\nlayer = 3"), {},
+                 {"wall[0].layer", "unknown key", "did you mean 'layers'?"});
 }
 
 TEST_F(CaseReaderTest, MisspeltRequiredKeyIsReportedAsMissing) {
     // The required key is read (and found missing) before unknown keys are reported.
-    expect_error(replaced(minimal_2d, "particle_spacing =", "particle_spacng ="), {},
-                 {"numerics.particle_spacing", "required"});
+    // It names the misspelt key it found instead, and no valid key as unrecognised.
+    const std::string message = error_of(replaced(minimal_2d, "particle_spacing =", "particle_spacng ="), {});
+    EXPECT_NE(message.find("key 'numerics.particle_spacing': is required"), std::string::npos) << message;
+    EXPECT_NE(message.find("the file has 'numerics.particle_spacng': did you mean 'particle_spacing'?"),
+              std::string::npos) << message;
+    EXPECT_EQ(message.find("not recognised"), std::string::npos) << message;
 }
 
 TEST_F(CaseReaderTest, WrongType) {
