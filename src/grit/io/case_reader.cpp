@@ -205,9 +205,8 @@ private:
         if (table_)
             for (const auto& [k, v] : *table_)
                 if (!keys_->used.count(key_path(k.str()))) unread.emplace_back(k.str());
-        for (const auto& k : unread)
-            if (core::closest_spelling(k, {std::string(key)}))
-                return fmt::format("is required (the file has '{}': did you mean '{}'?)", key_path(k), key);
+        if (const auto misspelt = core::closest_spelling(key, unread))
+            return fmt::format("is required (the file has '{}': did you mean '{}'?)", key_path(*misspelt), key);
         return "is required";
     }
     const toml::node* node(std::string_view key) const { return table_ ? table_->get(key) : nullptr; }
