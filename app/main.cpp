@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -47,6 +48,21 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         fmt::print("{}: {} steps to t = {:.6g} s, {} particles, {:.3g} s wall, {:.3g} particle-steps/s -> {}\n",
                    spec.name, summary.steps, summary.end_time, summary.particles, summary.wall_time_s,
                    summary.particle_steps_per_second, options.output_dir.string());
+    if (!quiet) {
+        // The erosion results an AWJ user reads first, when the case computes them.
+        std::vector<std::string> results;
+        auto add = [&](const char* name, const char* label, double scale, const char* unit) {
+            for (const auto& v : summary.values)
+                if (v.name == name && v.in_summary && std::isfinite(v.value))
+                    results.push_back(fmt::format("{} = {:.4g}{}{}", label, v.value * scale, *unit ? " " : "", unit));
+        };
+        add("crater_depth", "crater depth C_d", 1e3, "mm");
+        add("crater_width", "crater width C_w", 1e3, "mm");
+        add("eroded_mass", "eroded mass", spec.dimension == 2 ? 1e3 : 1e6, spec.dimension == 2 ? "g/m" : "mg");
+        add("grains_injected", "grains fed", 1.0, "");
+        add("impacts", "impacts", 1.0, "");
+        if (!results.empty()) fmt::print("  {}\n", fmt::join(results, ", "));
+    }
     return 0;
 }
 

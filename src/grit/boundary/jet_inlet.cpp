@@ -11,6 +11,7 @@ JetInlet<Dim>::JetInlet(const io::InletSpec& spec, double spacing, double densit
     for (int k = 0; k < Dim; ++k) {
         position_[k] = spec.position[static_cast<std::size_t>(k)];
         direction_[k] = spec.direction[static_cast<std::size_t>(k)];
+        motion_[k] = spec.motion.empty() ? 0.0 : spec.motion[static_cast<std::size_t>(k)];
     }
     // Orthonormal directions spanning the inlet section.
     Vec t1 = Vec::zero();
@@ -60,11 +61,13 @@ double JetInlet<Dim>::emit(particles::SphParticles<Dim>& ps, double t, double dt
         double* m = ps.mass();
         std::int32_t* phase = ps.phase();
         std::int32_t* mat = ps.material();
+        // The layer left the section travelled_ / velocity ago, from where the nozzle was then; it has
+        // moved with the nozzle since, so it lies ahead of the nozzle's place at t + dt.
+        const Vec nozzle = position_ + motion_ * (t + dt);
         for (Index k = 0; k < count; ++k) {
             const Index i = first + k;
-            // The layer left the inlet section `travelled_` ago.
-            x[i] = position_ + layer_[static_cast<std::size_t>(k)] + direction_ * travelled_;
-            v[i] = direction_ * spec_.velocity;
+            x[i] = nozzle + layer_[static_cast<std::size_t>(k)] + direction_ * travelled_;
+            v[i] = direction_ * spec_.velocity + motion_;
             rho[i] = density_;
             v_half[i] = v[i];
             rho_half[i] = density_;

@@ -1,5 +1,6 @@
 // A jet inlet: emits layers of fluid particles through a segment (2D) or disc (3D) at a set velocity,
-// one layer each time the previous one has travelled one particle spacing.
+// one layer each time the previous one has travelled one particle spacing. A traversing nozzle moves at
+// `motion` (its section is at position + motion t).
 #pragma once
 
 #include <vector>
@@ -31,6 +32,7 @@ public:
 private:
     io::InletSpec spec_;
     Vec position_, direction_;
+    Vec motion_;  ///< the nozzle's velocity (traverse) [m/s]
     double spacing_, density_, mass_;
     std::vector<Vec> layer_;
     double travelled_;  ///< distance the last emitted layer has moved [m]

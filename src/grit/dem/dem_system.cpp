@@ -42,6 +42,15 @@ Index DemSystem<Dim>::add_grain(const Vec& x, double radius, std::int32_t materi
 }
 
 template <int Dim>
+Index DemSystem<Dim>::inject_grain(const Vec& x, double radius, std::int32_t material, const Vec& v) {
+    const bool ready = forces_ready_;
+    const Index i = add_grain(x, radius, material, v);
+    grains_.force()[i] = parameters_.gravity * grains_.mass()[i];
+    forces_ready_ = ready;
+    return i;
+}
+
+template <int Dim>
 void DemSystem<Dim>::add_wall(const PlaneWall<Dim>& wall) {
     const double len = core::norm(wall.normal);
     if (!(len > 0.0)) throw core::InputError("plane wall: the normal must be a non-zero vector");
@@ -79,6 +88,13 @@ void DemSystem<Dim>::rebuild_neighbors() {
     const GrainDomain<Dim>& domain = parameters_.domain;
     for_each_grain(n, [&](Index i) { x[i] = domain.wrap(x[i]); });
     skin_ = skin();
+    if (n == 0) {  // no grains yet (a feed brings them): empty lists, no grid
+        list_ = GrainNeighborList<Dim>();
+        scratch_.reset(0);
+        lists_dirty_ = false;
+        ++counters_.rebuilds;
+        return;
+    }
     const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains_.radius()[i]; });
     const double cell = 2.0 * rmax + skin_;
     const auto grid = GrainNeighborList<Dim>::make_grid(domain, x, n, cell);
@@ -233,7 +249,7 @@ void DemSystem<Dim>::save(io::Hdf5Group& group) const {
     history_.write(history);
     // The lists are valid for the current grains unless dirty: they are rebuilt on load from the
     // positions they were built at (sorted and wrapped then), which gives the same rows and order.
-    if (!lists_dirty_)
+    if (!lists_dirty_ && grains_.size() > 0)
         group.write("list_reference_positions", reinterpret_cast<const double*>(list_.reference_positions()),
                     static_cast<std::size_t>(list_.grain_count()), Dim);
 }
@@ -250,7 +266,7 @@ void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     counters_.rebuilds = group.read_int("rebuilds");
     history_.read(group.open_group("contact_history"));
     list_ = GrainNeighborList<Dim>();
-    if (lists_dirty_) return;
+    if (lists_dirty_ || grains_.size() == 0) return;
     std::size_t rows = 0;
     const auto raw = group.read_doubles("list_reference_positions", Dim, rows);
     const Index n = grains_.size();

@@ -59,6 +59,10 @@ public:
     /// Adds one grain of material `material` (index) and returns its index (valid until the next step,
     /// which may re-sort grains; use the `id` field to follow a grain).
     Index add_grain(const Vec& x, double radius, std::int32_t material, const Vec& v = Vec::zero());
+    /// Adds a grain during a run (a feed), before the step's force stages: its force starts at its
+    /// weight and its contacts enter at the next force stage, while the forces the other grains hold
+    /// stay valid (add_grain would have them recomputed, dropping what coupling stages added).
+    Index inject_grain(const Vec& x, double radius, std::int32_t material, const Vec& v);
     /// Adds a plane wall; its history field `wall_history_<k>` joins the grain registry.
     void add_wall(const PlaneWall<Dim>& wall);
     /// Reorders/removes grains (new[i] = old[source[i]]); contact history follows by id.

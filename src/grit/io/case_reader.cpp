@@ -16,6 +16,7 @@
 #include "grit/core/error.hpp"
 #include "grit/core/spelling.hpp"
 #include "grit/core/types.hpp"
+#include "grit/io/jet_builder.hpp"
 #include "grit/io/particle_budget.hpp"
 #include "grit/material/library.hpp"
 #include "grit/sph/kernels.hpp"
@@ -660,6 +661,64 @@ void read_periodic(CaseSpec& c, const Section& domain, const Section& dem,
         }
 }
 
+/// [jet]: the jet as the machine is set up. The geometry it implies is built by io/jet_builder.
+void read_jet(const Section& j, CaseSpec& c, MaterialTable& table) {
+    JetSpec& jet = c.jet;
+    c.has_jet = true;
+    jet.diameter = j.number("diameter", positive("[m]"));
+    jet.material = table.resolve(j, "material", j.text_or("material", "water"));
+    if (j.has("velocity") && j.has("pressure")) j.fail("pressure", "give either jet.velocity or jet.pressure, not both");
+    if (j.has("pressure")) {
+        // Pump pressures are hundreds of MPa; a value below 10 kPa is almost surely in MPa.
+        jet.pressure = j.number("pressure", [](double v) {
+            return v >= 1e4 ? std::string{}
+                            : fmt::format("is in Pa and must be at least 1e4 (did you mean {} MPa = {:g} Pa?)", v, v * 1e6);
+        });
+        jet.volume_efficiency = j.number_or("volume_efficiency", jet.volume_efficiency, in_range(0.01, 1.0));
+        const double rho = c.materials[static_cast<std::size_t>(jet.material)].reference_density();
+        jet.velocity = jet_velocity_from_pressure(jet.pressure, jet.volume_efficiency, rho);
+    } else {
+        if (!j.has("velocity")) j.fail("velocity", "is required (or jet.pressure, the pump pressure [Pa], eq. 52)");
+        jet.velocity = j.number("velocity", positive("[m/s]"));
+    }
+    jet.angle = j.number_or("angle", jet.angle, [](double v) {
+        return v > 0.0 && v <= 90.0 ? std::string{} : std::string("must lie in (0, 90] [deg] (90: normal to the surface)");
+    });
+    jet.standoff = j.number("standoff", positive("[m]"));
+    jet.target = j.vector_or("target", c.dimension, "[m]", {});
+    jet.traverse_speed = j.number_or("traverse_speed", 0.0, non_negative("[m/s]"));
+    jet.start = j.number_or("start", 0.0, non_negative("[s]"));
+    jet.stop = j.number_or("stop", 1e300, non_negative("[s]"));
+    if (jet.stop <= jet.start) j.fail("stop", "must come after jet.start");
+    jet.side_outlets = j.flag_or("side_outlets", true);
+    jet.clamp_sides = j.flag_or("clamp_sides", true);
+}
+
+/// [abrasive]: the grains fed into the jet; y_dis or M is completed by io/jet_builder.
+void read_abrasive(const Section& a, CaseSpec& c, GrainMaterialTable& grain_table) {
+    if (!c.has_jet)
+        throw InputError("key 'abrasive': the abrasive feed rides a [jet]; add one, or place grains with [[grains]]");
+    AbrasiveSpec& ab = c.abrasive;
+    ab.enabled = true;
+    ab.material = grain_table.resolve(a, "material", a.text_or("material", "garnet"));
+    ab.size = read_grain_size(a, c.grain_materials[static_cast<std::size_t>(ab.material)]);
+    if (a.has("mass_flow_rate") && a.has("spacing"))
+        a.fail("spacing", "give either abrasive.mass_flow_rate or abrasive.spacing (y_dis), not both (eq. 55)");
+    if (a.has("mass_flow_rate")) {
+        ab.rate_key = "abrasive.mass_flow_rate";
+        ab.mass_flow_rate = a.number("mass_flow_rate", positive("[kg/s]"));
+    } else {
+        if (!a.has("spacing"))
+            a.fail("mass_flow_rate", "is required (or abrasive.spacing, the liquid column length y_dis of eq. 55)");
+        ab.rate_key = "abrasive.spacing";
+        ab.spacing = a.number("spacing", positive("[m]"));
+    }
+    ab.seed = static_cast<std::uint64_t>(a.integer_or("seed", 1, 0, 2147483647));
+    ab.start = a.number_or("start", c.jet.start, non_negative("[s]"));
+    ab.stop = a.number_or("stop", c.jet.stop, non_negative("[s]"));
+    if (ab.stop <= ab.start) a.fail("stop", "must come after abrasive.start");
+}
+
 CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
     if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
     toml::table root;
@@ -778,6 +837,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         OutletSpec o = read_box(s, dim);
         c.outlets.push_back(std::move(o));
     }
+    if (top.has("jet")) read_jet(top.section("jet"), c, table);
     std::set<std::string> probe_names;
     for (const Section& s : top.sections("probe")) {
         ProbeSpec p;
@@ -862,8 +922,9 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
                                                    fmt::join(b.velocity, ", ")));
         c.grains.push_back(std::move(b));
     }
+    if (top.has("abrasive")) read_abrasive(top.section("abrasive"), c, grain_table);
     for (const Section& w : top.sections("grain_wall")) {
-        if (c.grains.empty()) throw InputError("key 'grain_wall': grain walls need [[grains]]");
+        if (!c.has_grains()) throw InputError("key 'grain_wall': grain walls need [[grains]] or [abrasive]");
         GrainWallSpec gw;
         gw.key = w.path();
         gw.name = w.text_or("name", fmt::format("plane{}", c.grain_walls.size()));
@@ -875,7 +936,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         for (double v : gw.normal) n2 += v * v;
         if (n2 <= 0.0) w.fail("normal", "must not be the zero vector");
         for (double& v : gw.normal) v /= std::sqrt(n2);
-        gw.material = w.has("material") ? grain_table.resolve(w, "material", w.text("material")) : c.grains.front().material;
+        gw.material = w.has("material") ? grain_table.resolve(w, "material", w.text("material")) : c.first_grain_material();
         c.grain_walls.push_back(std::move(gw));
     }
     std::optional<std::vector<bool>> dem_periodic;
@@ -901,11 +962,15 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     }
 
     const Section domain = top.section("domain");
-    c.domain_min = domain.vector("min", dim, "[m]");
-    c.domain_max = domain.vector("max", dim, "[m]");
-    for (int k = 0; k < dim; ++k)
-        if (c.domain_max[k] <= c.domain_min[k]) domain.fail("max", "must exceed domain.min in every direction");
-    c.remove_leaving = domain.choice("on_exit", "error", {"error", "remove"}) == "remove";
+    c.jet.derive_domain = c.has_jet && !top.has("domain");
+    if (!c.jet.derive_domain) {
+        c.domain_min = domain.vector("min", dim, "[m]");
+        c.domain_max = domain.vector("max", dim, "[m]");
+        for (int k = 0; k < dim; ++k)
+            if (c.domain_max[k] <= c.domain_min[k]) domain.fail("max", "must exceed domain.min in every direction");
+        c.remove_leaving = domain.choice("on_exit", "error", {"error", "remove"}) == "remove";
+    }
+    if (c.has_jet) build_jet(c);
     read_periodic(c, domain, top.section("dem"), dem_periodic);
 
     // Materials are read on first use; a defined but unused material is still checked and reported.
@@ -916,7 +981,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     }
 
     if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
-        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]] or [[grains]]");
+        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]], [jet] or [[grains]]");
     report_unknown(root, "", keys);
     // Last, once everything else is valid: refuse a case too big to allocate.
     check_particle_budget(c);

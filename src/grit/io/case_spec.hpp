@@ -47,6 +47,50 @@ struct InletSpec {
     double velocity = 0.0;          ///< [m/s]
     int material = 0;
     double start = 0.0, stop = 1e300;  ///< emission window [s]
+    /// Velocity of the nozzle itself (a traversing jet) [m/s]; the section is at position + motion t,
+    /// and the emitted fluid moves at velocity direction + motion. Empty: at rest.
+    std::vector<double> motion;
+};
+
+/// [jet]: an abrasive water jet as the machine is set up (first seed paper section 4, Fig. 9). The
+/// builder (io/jet_builder.hpp) turns it into an inlet aimed at the specimen (the first [[solid]], a
+/// box), side outlets, side clamps, a crater analysis (2D) and, without [domain], the domain.
+/// The vertical axis is the last one (y in 2D, z in 3D); the nozzle traverses along +x.
+struct JetSpec {
+    double diameter = 0.0;            ///< jet.diameter [m]
+    double velocity = 0.0;            ///< jet.velocity [m/s], or from jet.pressure by eq. (52)
+    double pressure = 0.0;            ///< jet.pressure [Pa] (0: velocity given)
+    double volume_efficiency = 0.7;   ///< jet.volume_efficiency, kappa of eq. (52)
+    double angle = 90.0;              ///< jet.angle [deg]: between the jet and the surface (90: normal)
+    double standoff = 0.0;            ///< jet.standoff [m]: nozzle to target along the jet axis
+    std::vector<double> target;       ///< jet.target [m]: the point aimed at (default: top centre of the specimen)
+    double traverse_speed = 0.0;      ///< jet.traverse_speed [m/s]: the nozzle moves along +x
+    double start = 0.0, stop = 1e300; ///< jet.start, jet.stop [s]
+    int material = 0;                 ///< jet.material (index into CaseSpec::materials)
+    bool side_outlets = true;         ///< jet.side_outlets: outlets at both sides (unless [[outlet]] given)
+    bool clamp_sides = true;          ///< jet.clamp_sides: the specimen clamped at its sides (unless [[clamp]] given)
+    bool derive_domain = false;       ///< no [domain]: the builder sets it around the specimen and nozzle
+    double side_width = 0.0;          ///< width of the side outlets [m] (set by the builder)
+};
+
+/// [abrasive]: grains fed into the jet, one at a random place in each liquid column of length
+/// `spacing` (y_dis), entering at the jet's velocity (first seed paper Fig. 9, eqs. 54-55).
+struct AbrasiveSpec {
+    bool enabled = false;
+    int material = 0;                               ///< abrasive.material (index into grain_materials)
+    dem::SizeDistribution size = dem::FixedSize{};  ///< abrasive.diameter or abrasive.size
+    double spacing = 0.0;          ///< abrasive.spacing, y_dis [m] (given, or from the mass flow rate)
+    double mass_flow_rate = 0.0;   ///< abrasive.mass_flow_rate, M of eq. (55) [kg/s] (given, or from y_dis)
+    double volume_fraction = 0.0;  ///< zeta of eq. (54) [-]
+    std::string rate_key = "abrasive.spacing";  ///< the key that set the feed (for messages)
+    std::uint64_t seed = 1;        ///< abrasive.seed
+    double start = 0.0, stop = 1e300;  ///< abrasive.start, abrasive.stop [s] (default: the jet's)
+    int inlet = 0;                 ///< the jet's inlet in CaseSpec::inlets
+    /// How far upstream of the nozzle section a grain joins the run [m] (set by the builder): beyond
+    /// the coupling's reach of the water already emitted, so the grain never appears inside water (the
+    /// porosity there would drop at once, a pressure jump); the water emitted around it is then new to
+    /// the coupling and takes the porosity into its mass (eq. 21).
+    double lead = 0.0;
 };
 
 /// An outlet (a box that removes the fluid particles entering it and books their mass), or a clamp
@@ -173,9 +217,16 @@ struct CaseSpec {
     std::vector<dem::GrainMaterial> grain_materials;  ///< the grain (and grain-wall) materials used
     std::vector<GrainBlockSpec> grains;
     std::vector<GrainWallSpec> grain_walls;
+    bool has_jet = false;  ///< [jet] given
+    JetSpec jet;
+    AbrasiveSpec abrasive;
     DemSpec dem;
     CouplingSpec coupling;
     bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
+    /// Grains at the start ([[grains]]) or fed during the run ([abrasive]).
+    bool has_grains() const { return !grains.empty() || abrasive.enabled; }
+    /// The material of the first grains: the first [[grains]] block's, else the abrasive's.
+    int first_grain_material() const { return !grains.empty() ? grains.front().material : abrasive.material; }
 };
 
 }  // namespace grit::io

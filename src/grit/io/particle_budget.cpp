@@ -107,6 +107,12 @@ ParticleEstimate estimate_particles(const CaseSpec& c) {
     for (const auto& in : c.inlets) e.inlets += inlet_bound(in, dim, dx, c.end_time);
     e.sph += e.inlets;
     for (const auto& g : c.grains) e.grains += grain_count(g, dim);
+    if (c.abrasive.enabled && c.abrasive.spacing > 0.0) {
+        // One grain per column of the jet that enters by time.end (and one that joins ahead of it).
+        const auto& jet = c.inlets[static_cast<std::size_t>(c.abrasive.inlet)];
+        const double duration = std::min(c.abrasive.stop, c.end_time) - c.abrasive.start;
+        if (duration > 0.0) e.grains += 2.0 + std::floor(jet.velocity * duration / c.abrasive.spacing);
+    }
     e.bytes = e.sph * (dim == 2 ? sph_bytes_2d : sph_bytes_3d) + e.grains * grain_bytes;
     return e;
 }

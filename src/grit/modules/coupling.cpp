@@ -42,10 +42,13 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
     // A grain whose volume exceeds its kernel's reach drives the porosity at its centre below zero
     // (V_i W(0, h_c) > 1): the floor then hides it and the pressure of eq. (21) runs away. In 2D with the
     // cubic spline V W(0) = 10 / (7 k^2) for R_c = k d, 1.43 at k = 1.
+    // The grains of the run: those at the start and the largest an abrasive feed brings.
     const auto& grains = state.grains->grains();
+    std::vector<double> radii(grains.radius(), grains.radius() + grains.size());
+    if (spec.abrasive.enabled)
+        radii.push_back(0.5 * std::visit([](const auto& d) { return d.largest(); }, spec.abrasive.size));
     double worst = 0.0;
-    for (Index i = 0; i < grains.size(); ++i) {
-        const double r = grains.radius()[i];
+    for (const double r : radii) {
         const double h = 0.5 * p.radius_factor * 2.0 * r;
         const double w0 = std::visit([&](const auto& k) { return std::decay_t<decltype(k)>(h).value(0.0); }, setup.kernel);
         worst = std::max(worst, coupling::grain_volume<Dim>(r) * w0);
@@ -60,8 +63,7 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
 
     // The pair list bins the grains in cells of the largest R_c: a periodic axis must hold three.
     double largest_reach = 0.0;
-    for (Index i = 0; i < grains.size(); ++i)
-        largest_reach = std::max(largest_reach, p.radius_factor * 2.0 * grains.radius()[i]);
+    for (const double r : radii) largest_reach = std::max(largest_reach, p.radius_factor * 2.0 * r);
     for (int k = 0; k < Dim; ++k) {
         const double length = setup.periodic_box.length(k);
         if (setup.periodic_box.periodic[k] && length < 3.0 * largest_reach * (1.0 + 1e-12))

@@ -14,7 +14,7 @@ GrainContactModule<Dim>::GrainContactModule(sim::State<Dim>& state, const sim::R
     c.overlap_coefficient = spec.dem.overlap_coefficient;
     c.friction = spec.dem.solid_friction >= 0.0
                      ? spec.dem.solid_friction
-                     : spec.grain_materials[static_cast<std::size_t>(spec.grains.front().material)].friction;
+                     : spec.grain_materials[static_cast<std::size_t>(spec.first_grain_material())].friction;
     contact_ = coupling::GrainBoundaryContact<Dim>(c);
 }
 

@@ -10,6 +10,7 @@
 #include "grit/dem/grain_fill.hpp"
 #include "grit/io/vtu_writer.hpp"
 #include "grit/parallel/parallel.hpp"
+#include "grit/sim/geometry.hpp"
 
 namespace grit::modules {
 
@@ -78,7 +79,38 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
 
 template <int Dim>
 void GrainsModule<Dim>::install(sim::Pipeline& pipeline) {
+    const auto& spec = setup_.spec;
+    if (spec.remove_leaving || !spec.outlets.empty())
+        pipeline.add(sim::Hook::boundaries, "grain_exit", [this] { remove_leaving(); });
     pipeline.add(sim::Hook::post_force, "grain_motion", [this] { advance(); });
+}
+
+template <int Dim>
+void GrainsModule<Dim>::remove_leaving() {
+    // Grains leave through the outlets, as the water does, and (domain.on_exit = "remove") through the
+    // domain's faces; their mass is booked as grain mass out.
+    const auto& spec = setup_.spec;
+    auto& system = *state_.grains;
+    const auto& grains = system.grains();
+    const auto* x = grains.position();
+    const auto& periodic = system.parameters().domain.periodic;
+    std::vector<Index> keep;
+    keep.reserve(static_cast<std::size_t>(grains.size()));
+    for (Index g = 0; g < grains.size(); ++g) {
+        bool out = false;
+        for (const auto& o : spec.outlets) out = out || sim::inside<Dim>(x[g], o.min, o.max);
+        if (spec.remove_leaving)
+            for (int k = 0; k < Dim; ++k)
+                out = out || (!periodic[k] && (x[g][k] < spec.domain_min[static_cast<std::size_t>(k)] ||
+                                               x[g][k] > spec.domain_max[static_cast<std::size_t>(k)]));
+        if (out) {
+            grain_mass_out_ += grains.mass()[g];
+            ++grains_out_;
+        } else {
+            keep.push_back(g);
+        }
+    }
+    if (static_cast<Index>(keep.size()) < grains.size()) system.gather(keep);
 }
 
 template <int Dim>
@@ -144,6 +176,10 @@ template <int Dim>
 void GrainsModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     out.push_back(sim::OutputValue::count("grains", static_cast<double>(state_.grains->grains().size())));
     out.push_back(sim::OutputValue::real("grain_kinetic_energy", state_.grains->kinetic_energy()));
+    if (setup_.spec.remove_leaving || !setup_.spec.outlets.empty()) {
+        out.push_back(sim::OutputValue::count("grains_out", static_cast<double>(grains_out_)));
+        out.push_back(sim::OutputValue::real("grain_mass_out", grain_mass_out_).summary_only());
+    }
     out.push_back(sim::OutputValue::count("impacts", static_cast<double>(state_.impacts.total())).summary_only());
 }
 
@@ -174,12 +210,16 @@ void GrainsModule<Dim>::write_output(const sim::OutputPlace& place) {
 template <int Dim>
 void GrainsModule<Dim>::save(io::Hdf5Group& group) {
     group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
+    group.write("grains_out", grains_out_);
+    group.write("grain_mass_out", grain_mass_out_);
     io::save_pvd_entries(group, "pvd", pvd_ ? pvd_->entries() : restored_pvd_);
 }
 
 template <int Dim>
 void GrainsModule<Dim>::load(const io::Hdf5Group& group) {
     snapshot_index_ = static_cast<long>(group.read_int("snapshot_index"));
+    grains_out_ = group.read_int("grains_out");
+    grain_mass_out_ = group.read_double("grain_mass_out");
     restored_pvd_ = io::load_pvd_entries(group, "pvd");
 }
 

@@ -47,12 +47,17 @@ private:
     /// impulses equal and opposite. Logs first contacts with the planes at time + dt.
     void advance();
 
+    /// Removes the grains inside an outlet or (domain.on_exit = "remove") outside the domain.
+    void remove_leaving();
+
     sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
     std::vector<std::string> wall_names_;
     std::unique_ptr<io::PvdWriter> pvd_;
     std::vector<io::PvdWriter::Entry> restored_pvd_;  ///< a checkpoint's entries, until open_output
     long snapshot_index_ = 0;
+    std::int64_t grains_out_ = 0;   ///< grains removed through outlets and the domain's faces
+    double grain_mass_out_ = 0.0;   ///< their mass [kg] (per metre in 2D)
 };
 
 extern template class GrainsModule<2>;

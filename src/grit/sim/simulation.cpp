@@ -15,6 +15,7 @@
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/core/error.hpp"
 #include "grit/io/vtu_writer.hpp"
+#include "grit/modules/abrasive_feed.hpp"
 #include "grit/modules/analyses.hpp"
 #include "grit/modules/grain_contact.hpp"
 #include "grit/modules/coupling.hpp"
@@ -206,7 +207,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         for (Index i = 0; i < state_.particles.size(); ++i) xw[i] = setup_.periodic_box.wrap(xw[i]);
     }
 
-    if (!spec_.grains.empty()) {
+    if (spec_.has_grains()) {
         // The grains module builds the grains the others register fields on; its step runs after
         // theirs (contact and coupling forces first, then the grains' kick).
         auto grains = std::make_unique<modules::GrainsModule<Dim>>(state_, setup_);
@@ -214,6 +215,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         if (has_sph_ && spec_.coupling.enabled && has_fluid(spec_))
             modules_.push_back(std::make_unique<modules::CouplingModule<Dim>>(state_, setup_));
         modules_.push_back(std::move(grains));
+        if (spec_.abrasive.enabled) modules_.push_back(std::make_unique<modules::AbrasiveFeedModule<Dim>>(state_, setup_));
     }
     if (!spec_.probes.empty()) {
         auto m = std::make_unique<modules::ProbesModule<Dim>>(state_, setup_);

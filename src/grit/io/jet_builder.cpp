@@ -1,0 +1,218 @@
+// The jet builder.
+#include "grit/io/jet_builder.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "grit/core/error.hpp"
+
+namespace grit::io {
+
+double jet_velocity_from_pressure(double pressure, double volume_efficiency, double density) {
+    return volume_efficiency * std::sqrt(2.0 * pressure / density);
+}
+
+double abrasive_volume(int dimension, double diameter, double jet_diameter) {
+    const double r = 0.5 * diameter;
+    return dimension == 2 ? std::numbers::pi * r * r * jet_diameter : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+}
+
+double abrasive_mass_flow_rate(double grain_density, double jet_velocity, double volume, double spacing) {
+    return grain_density * jet_velocity * volume / spacing;
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::string& key, double value, const std::string& reason) {
+    throw core::InputError(fmt::format("key '{}' = {}: {}", key, value, reason));
+}
+
+std::string point_text(const std::vector<double>& x) { return fmt::format("({:.4g})", fmt::join(x, ", ")); }
+
+/// The mean diameter of a size distribution [m] (eq. 55 takes one grain volume).
+double mean_diameter(const dem::SizeDistribution& size) {
+    return std::visit(
+        [](const auto& d) -> double {
+            using T = std::decay_t<decltype(d)>;
+            if constexpr (std::is_same_v<T, dem::FixedSize>) return d.diameter;
+            else if constexpr (std::is_same_v<T, dem::UniformSize>) return 0.5 * (d.min + d.max);
+            else return d.mean;
+        },
+        size);
+}
+
+/// How far upstream of the nozzle a grain joins the run: beyond the coupling's reach (R_c of the
+/// largest grain) of the water already emitted, plus two spacings [m].
+double abrasive_lead(const CaseSpec& c) {
+    const double largest = std::visit([](const auto& d) { return d.largest(); }, c.abrasive.size);
+    return c.coupling.radius * largest + 2.0 * c.particle_spacing;
+}
+
+void build_abrasive(CaseSpec& c, const InletSpec& jet) {
+    AbrasiveSpec& a = c.abrasive;
+    const auto& grain = c.grain_materials[static_cast<std::size_t>(a.material)];
+    const double largest = std::visit([](const auto& d) { return d.largest(); }, a.size);
+    if (largest > jet.diameter)
+        fail("abrasive.diameter", largest,
+             fmt::format("a grain is wider than the jet (jet.diameter = {} m); it cannot ride inside it", jet.diameter));
+    const double volume = abrasive_volume(c.dimension, mean_diameter(a.size), jet.diameter);
+    const double densest = grain.density * jet.velocity * volume / largest;  // M at y_dis = the largest diameter
+    if (a.rate_key == "abrasive.mass_flow_rate") {
+        if (a.mass_flow_rate > densest)
+            fail(a.rate_key, a.mass_flow_rate,
+                 fmt::format("packs the grains closer than their diameter: y_dis would be {:.3g} m, below the largest "
+                             "grain's {:.3g} m (at most {:.3g} kg/s for this jet and grain, eq. 55)",
+                             grain.density * jet.velocity * volume / a.mass_flow_rate, largest, densest));
+        a.spacing = grain.density * jet.velocity * volume / a.mass_flow_rate;
+    } else {
+        if (a.spacing < largest)
+            fail(a.rate_key, a.spacing,
+                 fmt::format("packs the grains closer than their diameter ({:.3g} m): a liquid column must hold its "
+                             "grain whole",
+                             largest));
+        a.mass_flow_rate = abrasive_mass_flow_rate(grain.density, jet.velocity, volume, a.spacing);
+    }
+    // Eq. (54): the grain's share of its column, pi d^2 / 4 over y_dis d_jet in 2D, the sphere over the
+    // cylinder y_dis pi d_jet^2 / 4 in 3D.
+    const double column = c.dimension == 2 ? a.spacing * jet.diameter * jet.diameter
+                                           : a.spacing * std::numbers::pi * 0.25 * jet.diameter * jet.diameter;
+    a.volume_fraction = volume / column;
+    a.inlet = static_cast<int>(c.inlets.size()) - 1;
+    a.lead = abrasive_lead(c);
+    // The grains join the run upstream of the nozzle: that point must lie in the domain.
+    for (std::size_t k = 0; k < jet.position.size(); ++k) {
+        const double x = jet.position[k] - jet.direction[k] * (a.lead + 0.5 * largest);
+        if (x < c.domain_min[k] - 1e-12 || x > c.domain_max[k] + 1e-12)
+            throw core::InputError(fmt::format(
+                "key 'domain.{}' = [{}]: the abrasive joins the jet {:.3g} m upstream of the nozzle, at {} = {:.4g} m, "
+                "outside the domain; extend it (or leave [domain] out: the jet builder sizes it)",
+                x < c.domain_min[k] ? "min" : "max", fmt::join(x < c.domain_min[k] ? c.domain_min : c.domain_max, ", "),
+                a.lead, "xyz"[k], x));
+    }
+}
+
+}  // namespace
+
+void build_jet(CaseSpec& c) {
+    JetSpec& j = c.jet;
+    const int dim = c.dimension;
+    const auto V = static_cast<std::size_t>(dim - 1);  // the vertical axis
+    const double dx = c.particle_spacing;
+    if (c.solids.empty() || c.solids.front().shape.kind != "box")
+        throw core::InputError(
+            "key 'jet': the jet is aimed at the specimen, the first [[solid]], which must be a box (shape = \"box\"); "
+            "use [[inlet]] for other set-ups");
+    const auto& specimen = c.solids.front();
+    const std::vector<double> lo = specimen.shape.min, hi = specimen.shape.max;
+    const double surface = hi[V];
+
+    if (j.target.empty()) {
+        j.target.assign(static_cast<std::size_t>(dim), 0.0);
+        for (std::size_t k = 0; k < V; ++k) j.target[k] = 0.5 * (lo[k] + hi[k]);
+        j.target[V] = surface;
+    }
+    const double angle = j.angle * std::numbers::pi / 180.0;
+    std::vector<double> direction(static_cast<std::size_t>(dim), 0.0);
+    direction[0] = std::cos(angle);
+    direction[V] = -std::sin(angle);
+    if (j.angle == 90.0) direction[0] = 0.0;  // exactly normal, not cos(pi/2) = 6e-17
+    std::vector<double> nozzle(static_cast<std::size_t>(dim));
+    for (std::size_t k = 0; k < nozzle.size(); ++k) nozzle[k] = j.target[k] - direction[k] * j.standoff;
+
+    // The nozzle section must clear the specimen's top by a particle spacing.
+    const double lowest = nozzle[V] - 0.5 * j.diameter * std::abs(direction[0]);
+    if (lowest < surface + dx)
+        fail("jet.standoff", j.standoff,
+             fmt::format("puts the nozzle at {} with its section down to {} = {:.4g} m, inside or within a particle "
+                         "spacing of the specimen's top surface ({} = {:.4g} m); use a larger standoff or a higher "
+                         "jet.target",
+                         point_text(nozzle), "xyz"[V], lowest, "xyz"[V], surface));
+    if (j.diameter < dx)
+        fail("jet.diameter", j.diameter, fmt::format("is less than numerics.particle_spacing = {} m", dx));
+
+    InletSpec in;
+    in.key = "jet";
+    in.position = nozzle;
+    in.direction = direction;
+    in.diameter = j.diameter;
+    in.velocity = j.velocity;
+    in.material = j.material;
+    in.start = j.start;
+    in.stop = j.stop;
+    in.motion.assign(static_cast<std::size_t>(dim), 0.0);
+    in.motion[0] = j.traverse_speed;
+    c.inlets.push_back(in);
+
+    // Side zones: outlets above the specimen's edges and clamps along them (Fig. 9).
+    j.side_width = std::max(4.0 * dx, 0.08 * (hi[0] - lo[0]));
+    const double w = j.side_width;
+    if (j.derive_domain) {
+        c.domain_min.assign(static_cast<std::size_t>(dim), 0.0);
+        c.domain_max.assign(static_cast<std::size_t>(dim), 0.0);
+        for (std::size_t k = 0; k < V; ++k) {
+            c.domain_min[k] = lo[k] - w - 2.0 * dx;
+            c.domain_max[k] = hi[k] + w + 2.0 * dx;
+        }
+        c.domain_min[V] = lo[V] - 2.0 * dx;
+        double above = std::max(w, 4.0 * dx);
+        if (c.abrasive.enabled)
+            above = std::max(above, abrasive_lead(c) + std::visit([](const auto& d) { return d.largest(); }, c.abrasive.size));
+        c.domain_max[V] = std::max(nozzle[V], surface) + above;
+        c.remove_leaving = true;
+    }
+    // The nozzle must stay inside the domain while it traverses.
+    const double x_end = nozzle[0] + j.traverse_speed * std::min(c.end_time, j.stop);
+    for (std::size_t k = 0; k < nozzle.size(); ++k)
+        if (nozzle[k] < c.domain_min[k] || nozzle[k] > c.domain_max[k])
+            fail("jet.standoff", j.standoff,
+                 fmt::format("puts the nozzle at {}, outside the domain (domain.min/domain.max)", point_text(nozzle)));
+    if (x_end > c.domain_max[0])
+        fail("jet.traverse_speed", j.traverse_speed,
+             fmt::format("moves the nozzle to x = {:.4g} m by the end, outside the domain (x up to {:.4g} m)", x_end,
+                         c.domain_max[0]));
+
+    const double top = c.domain_max[V];
+    if (j.side_outlets && c.outlets.empty() && top > surface) {
+        for (std::size_t a = 0; a < V; ++a)
+            for (const double edge : {lo[a], hi[a]}) {
+                OutletSpec o;
+                o.key = fmt::format("jet (side outlet at {} = {:.4g} m)", "xyz"[a], edge);
+                o.min = c.domain_min;
+                o.max = c.domain_max;
+                // Across the edge, a spacing beyond it on the outer side.
+                const bool low = edge == lo[a];
+                o.min[a] = edge - w - (low ? dx : 0.0);
+                o.max[a] = edge + w + (low ? 0.0 : dx);
+                o.min[V] = surface;
+                o.max[V] = top;
+                c.outlets.push_back(o);
+            }
+    }
+    if (j.clamp_sides && c.clamps.empty()) {
+        for (std::size_t a = 0; a < V; ++a)
+            for (const double edge : {lo[a], hi[a]}) {
+                OutletSpec cl;
+                cl.key = fmt::format("jet (side clamp at {} = {:.4g} m)", "xyz"[a], edge);
+                cl.min = lo;
+                cl.max = hi;
+                for (std::size_t k = 0; k < cl.min.size(); ++k) cl.min[k] -= dx, cl.max[k] += dx;
+                if (edge == lo[a]) cl.max[a] = lo[a] + 0.5 * w;
+                else cl.min[a] = hi[a] - 0.5 * w;
+                cl.velocity.assign(static_cast<std::size_t>(dim), 0.0);
+                c.clamps.push_back(cl);
+            }
+    }
+    if (dim == 2 && !c.has_crater) {
+        c.has_crater = true;
+        c.crater_surface = surface;
+        c.crater_x_min = lo[0] + w;
+        c.crater_x_max = hi[0] - w;
+    }
+    if (c.abrasive.enabled) build_abrasive(c, c.inlets.back());
+}
+
+}  // namespace grit::io
