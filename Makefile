@@ -32,6 +32,7 @@ test-sanitize: deps
 
 demo: build
 	./$(BUILD)/grit run cases/demo.toml --out output/demo
+	./$(BUILD)/grit plot output/demo
 
 bench: build
 	./$(BUILD)/grit_bench --benchmark_counters_tabular=true

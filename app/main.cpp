@@ -1,5 +1,7 @@
-// The grit command-line front end: run, check, materials.
+// The grit command-line front end: run, sweep, plot, check, materials.
 #include <CLI/CLI.hpp>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -17,6 +19,9 @@
 #include "grit/material/library.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/simulation.hpp"
+#include "sweep.hpp"
+
+extern char** environ;
 
 namespace {
 
@@ -66,6 +71,26 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     return 0;
 }
 
+/// `grit plot FOLDER`: scripts/grit_plot.py with Debian's python3 (numpy, matplotlib).
+int plot_command(const std::string& folder) {
+    if (!std::filesystem::is_directory(folder))
+        throw grit::core::InputError(fmt::format("plot {}: no such folder", folder));
+    const std::filesystem::path script = std::filesystem::path(GRIT_SCRIPTS_DIR) / "grit_plot.py";
+    if (!std::filesystem::exists(script))
+        throw grit::core::InputError(fmt::format("plot: {} is missing (grit plot runs from its source tree)", script.string()));
+    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    std::vector<std::string> args = {python, script.string(), folder};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
+        throw std::runtime_error("plot: cannot start " + python);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+}
+
 /// --threads N: a positive whole number (checked here: CLI11's range check prints a 300-digit bound).
 int parse_threads(const std::string& text) {
     int n = 0;
@@ -80,9 +105,9 @@ int parse_threads(const std::string& text) {
 std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
         const auto extra = app.remaining();
-        if (extra.empty()) return "a command is required: run, check or materials (grit --help)";
+        if (extra.empty()) return "a command is required: run, sweep, plot, check or materials (grit --help)";
         if (extra.front().starts_with('-')) return fmt::format("unknown option '{}' (grit --help)", extra.front());
-        return fmt::format("unknown command '{}': the commands are run, check and materials (grit --help)",
+        return fmt::format("unknown command '{}': the commands are run, sweep, plot, check and materials (grit --help)",
                            extra.front());
     }
     std::string message = e.what();
@@ -119,6 +144,22 @@ int main(int argc, char** argv) {
     run->add_option("--restart", restart,
                     "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file");
 
+    auto* sweep = app.add_subcommand("sweep", "run a case over the product of parameter lists (sweep.csv)");
+    std::vector<std::string> params;
+    int jobs = 1;
+    sweep->add_option("case", case_file, "case file (TOML)")->required();
+    sweep->add_option("--param", params, "a swept key and its values: key=v1,v2,... (repeatable: their product)")
+        ->required();
+    sweep->add_option("--out", out, "sweep folder (default: output/<case name>_sweep)");
+    sweep->add_option("--set", sets, "override a case value in every run: key.path=value (repeatable)");
+    sweep->add_option("--jobs", jobs, "runs at once (the threads are shared among them)")->check(CLI::PositiveNumber);
+    auto* sweep_threads_opt = sweep->add_option("--threads", threads_text, "threads in all")->type_name("N");
+    sweep->add_flag("--quiet", quiet, "no progress lines");
+
+    auto* plot = app.add_subcommand("plot", "plots of a run or sweep folder into FOLDER/plots/ (matplotlib)");
+    std::string plot_folder;
+    plot->add_option("folder", plot_folder, "a run folder (series.csv) or a sweep folder (sweep.csv)")->required();
+
     auto* check = app.add_subcommand("check", "validate a case file without running it");
     check->add_option("case", case_file, "case file (TOML)")->required();
     check->add_option("--set", sets, "override a case value: key.path=value (repeatable)");
@@ -141,6 +182,20 @@ int main(int argc, char** argv) {
             const int threads = threads_opt->count() ? parse_threads(threads_text) : 0;
             return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart);
         }
+        if (sweep->parsed()) {
+            grit::app::SweepOptions o;
+            o.grit = std::filesystem::read_symlink("/proc/self/exe");
+            o.case_file = case_file;
+            o.sets = sets;
+            for (const auto& p : params) o.parameters.push_back(grit::app::parse_sweep_parameter(p));
+            const auto spec = grit::io::read_case(case_file, sets);
+            o.out = out.empty() ? std::filesystem::path("output") / (spec.name + "_sweep") : std::filesystem::path(out);
+            o.jobs = jobs;
+            o.threads = sweep_threads_opt->count() ? parse_threads(threads_text) : 0;
+            o.quiet = quiet;
+            return grit::app::run_sweep(o);
+        }
+        if (plot->parsed()) return plot_command(plot_folder);
         if (check->parsed()) {
             const auto spec = grit::io::read_case(case_file, sets);
             // Building the particles catches geometry errors too; nothing is written.

@@ -584,6 +584,51 @@ cp -- "${ckpts[-1]}" "$W/truncated.h5"
 truncate -s 2000 "$W/truncated.h5"
 expect_restart_error "a truncated checkpoint" "truncated.h5" "$DEMO" --restart "$W/truncated.h5"
 
+# --- sweep and plot -------------------------------------------------------------------------------------
+AWJ=$ROOT/cases/awj_aluminium_2d/case.toml
+SWEEP=$W/sweep
+grit sweep "$AWJ" --param jet.pressure=1.5e8,2.5e8 --set time.end=4e-6 --set output.snapshots=false \
+    --jobs 2 --threads 2 --out "$SWEEP"
+rows=$(grep -c ',completed,' "$SWEEP/sweep.csv" 2>/dev/null || true)
+if [[ $RC -eq 0 && $rows -eq 2 ]] && head -1 "$SWEEP/sweep.csv" | grep -q '^jet.pressure,crater_depth,crater_width,eroded_mass,' &&
+    [[ -f "$SWEEP/jet.pressure=2.5e8/summary.json" ]]; then
+    pass "sweep: two runs, sweep.csv with the swept key and the results"
+else
+    fail "sweep: two runs, sweep.csv with the swept key and the results" "exit $RC, $rows completed rows: $(cat "$W/stderr")"
+fi
+stamp=$(stat -c %Y "$SWEEP/jet.pressure=2.5e8/summary.json")
+grit sweep "$AWJ" --param jet.pressure=1.5e8,2.5e8 --set time.end=4e-6 --set output.snapshots=false --out "$SWEEP"
+if [[ $RC -eq 0 && $(grep -c 'done before, kept' "$W/stdout") -eq 2 &&
+    $(stat -c %Y "$SWEEP/jet.pressure=2.5e8/summary.json") -eq $stamp ]]; then
+    pass "sweep: finished runs are not redone"
+else
+    fail "sweep: finished runs are not redone" "exit $RC: $(cat "$W/stdout")"
+fi
+grit sweep "$AWJ" --param jet.pressure=150 --out "$W/badsweep"
+if [[ $RC -eq 2 ]] && grep -q "key 'jet.pressure' = 150" "$W/stderr" && [[ ! -e "$W/badsweep" ]]; then
+    pass "sweep: a bad value stops it before any run: $(cat "$W/stderr")"
+else
+    fail "sweep: a bad value stops it before any run" "exit $RC: $(cat "$W/stderr")"
+fi
+if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1; then
+    grit plot "$SWEEP"
+    if [[ $RC -eq 0 && -s "$SWEEP/plots/sweep_jet.pressure.png" ]]; then
+        pass "plot: a sweep folder gives C_d, C_w against the swept key"
+    else
+        fail "plot: a sweep folder" "exit $RC: $(cat "$W/stderr")"
+    fi
+    grit run "$AWJ" --out "$W/awjrun" --set time.end=8e-6 --quiet
+    grit plot "$W/awjrun"
+    if [[ $RC -eq 0 && -s "$W/awjrun/plots/crater_size.png" && -s "$W/awjrun/plots/crater_profile.png" &&
+        -s "$W/awjrun/plots/impacts.png" ]]; then
+        pass "plot: a run folder gives the crater profile and size, eroded mass and impact histograms"
+    else
+        fail "plot: a run folder" "exit $RC: $(cat "$W/stderr") $(ls "$W/awjrun/plots" 2>&1)"
+    fi
+else
+    skip "plot" "no python3 with matplotlib and numpy"
+fi
+
 # --- summary --------------------------------------------------------------------------------------------
 
 echo "$passed passed, $failed failed"

@@ -692,6 +692,7 @@ void read_jet(const Section& j, CaseSpec& c, MaterialTable& table) {
     if (jet.stop <= jet.start) j.fail("stop", "must come after jet.start");
     jet.side_outlets = j.flag_or("side_outlets", true);
     jet.clamp_sides = j.flag_or("clamp_sides", true);
+    jet.clamp_bottom = j.flag_or("clamp_bottom", false);
 }
 
 /// [abrasive]: the grains fed into the jet; y_dis or M is completed by io/jet_builder.

@@ -69,6 +69,7 @@ struct JetSpec {
     int material = 0;                 ///< jet.material (index into CaseSpec::materials)
     bool side_outlets = true;         ///< jet.side_outlets: outlets at both sides (unless [[outlet]] given)
     bool clamp_sides = true;          ///< jet.clamp_sides: the specimen clamped at its sides (unless [[clamp]] given)
+    bool clamp_bottom = false;        ///< jet.clamp_bottom: and at its bottom (a thick block: no spall from a free face)
     bool derive_domain = false;       ///< no [domain]: the builder sets it around the specimen and nozzle
     double side_width = 0.0;          ///< width of the side outlets [m] (set by the builder)
 };

@@ -192,7 +192,8 @@ void build_jet(CaseSpec& c) {
                 c.outlets.push_back(o);
             }
     }
-    if (j.clamp_sides && c.clamps.empty()) {
+    const bool own_clamps = !c.clamps.empty();
+    if (j.clamp_sides && !own_clamps) {
         for (std::size_t a = 0; a < V; ++a)
             for (const double edge : {lo[a], hi[a]}) {
                 OutletSpec cl;
@@ -205,6 +206,16 @@ void build_jet(CaseSpec& c) {
                 cl.velocity.assign(static_cast<std::size_t>(dim), 0.0);
                 c.clamps.push_back(cl);
             }
+    }
+    if (j.clamp_bottom && !own_clamps) {
+        OutletSpec cl;
+        cl.key = "jet (bottom clamp)";
+        cl.min = lo;
+        cl.max = hi;
+        for (std::size_t k = 0; k < cl.min.size(); ++k) cl.min[k] -= dx, cl.max[k] += dx;
+        cl.max[V] = lo[V] + 0.5 * w;
+        cl.velocity.assign(static_cast<std::size_t>(dim), 0.0);
+        c.clamps.push_back(cl);
     }
     if (dim == 2 && !c.has_crater) {
         c.has_crater = true;

@@ -158,6 +158,7 @@ std::string GrainsModule<Dim>::check_health() const {
     const auto& periodic = state_.grains->parameters().domain.periodic;
     const Index bad = parallel::first_index(grains.size(), [&](Index i) {
         if (!core::all_finite(x[i]) || !core::all_finite(v[i])) return true;
+        if (spec.remove_leaving) return false;  // a grain that has left is removed at the next step's start
         for (int k = 0; k < Dim; ++k)
             if (!periodic[k] && (x[i][k] < spec.domain_min[static_cast<std::size_t>(k)] ||
                                  x[i][k] > spec.domain_max[static_cast<std::size_t>(k)]))

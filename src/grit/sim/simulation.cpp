@@ -638,6 +638,10 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     if (!message.empty()) j["message"] = message;
     j["grit_version"] = version;
     j["dimension"] = Dim;
+    j["case_file"] = spec_.source.string();
+    j["particle_spacing"] = spec_.particle_spacing;
+    if (spec_.has_crater)  // where the crater is measured (for scripts/grit_plot.py's profiles)
+        j["crater_region"] = {{"surface", spec_.crater_surface}, {"x_min", spec_.crater_x_min}, {"x_max", spec_.crater_x_max}};
     j["threads"] = parallel::max_threads();
     j["particles"] = s.particles;
     j["steps"] = s.steps;

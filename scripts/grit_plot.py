@@ -1,0 +1,164 @@
+#!/usr/bin/python3
+"""Plots of a grit run or sweep folder, as PNG files in FOLDER/plots/ (what `grit plot FOLDER` runs).
+
+A run folder: the crater profile at several output times on one axis (2D cases with a crater
+analysis; from the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
+and histograms of the impact speeds and angles (impacts.csv). A sweep folder (sweep.csv): C_d, C_w and
+eroded mass against each swept parameter.
+
+usage: scripts/grit_plot.py FOLDER [--profiles N]
+Uses Debian's python3-numpy and python3-matplotlib.
+"""
+import argparse
+import json
+import pathlib
+import sys
+import xml.etree.ElementTree as ET
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from grit_vtu import read_vtu  # noqa: E402
+
+SOLID = 1  # grit's phase code of SPH solid particles (fluid 0, solid 1, wall 2)
+
+
+def read_csv(path):
+    data = np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8", deletechars="")
+    return np.atleast_1d(data)
+
+
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print(path)
+
+
+def crater_profiles(folder, summary, plots, count):
+    """Top of the solid in bins of one spacing over the crater region, at `count` output times."""
+    region = summary.get("crater_region")
+    pvd = folder / (summary["case"] + ".pvd")
+    if not region or not pvd.exists():
+        return
+    entries = [(float(e.get("timestep")), folder / e.get("file")) for e in ET.parse(pvd).getroot().iter("DataSet")]
+    entries = [e for e in entries if e[1].exists()]
+    if len(entries) < 2:
+        return
+    picks = sorted({round(k) for k in np.linspace(1, len(entries) - 1, min(count, len(entries) - 1))})
+    dx = summary["particle_spacing"]
+    edges = np.arange(region["x_min"], region["x_max"] + 0.5 * dx, dx)
+    centres = 0.5 * (edges[:-1] + edges[1:])
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    for k in picks:
+        time, path = entries[k]
+        v = read_vtu(path)
+        solid = v["phase"] == SOLID
+        x, y = v["Points"][solid, 0], v["Points"][solid, 1] + 0.5 * dx
+        top = np.full(len(centres), np.nan)
+        index = np.floor((x - region["x_min"]) / dx).astype(int)
+        inside = (index >= 0) & (index < len(centres))
+        for b, h in zip(index[inside], y[inside]):
+            if np.isnan(top[b]) or h > top[b]:
+                top[b] = h
+        ax.plot(centres * 1e3, (top - region["surface"]) * 1e3, label=f"{time * 1e6:.3g} us")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("surface - original [mm]")
+    ax.set_title("crater profile")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    save(fig, plots / "crater_profile.png")
+
+
+def run_plots(folder, plots, profiles):
+    summary = json.loads((folder / "summary.json").read_text()) if (folder / "summary.json").exists() else {}
+    series = read_csv(folder / "series.csv")
+    t = series["time"] * 1e6
+    names = series.dtype.names
+    if "crater_depth" in names:
+        fig, ax = plt.subplots(figsize=(7, 3.6))
+        ax.plot(t, series["crater_depth"] * 1e3, label="C_d (depth)")
+        ax.plot(t, series["crater_width"] * 1e3, label="C_w (width)")
+        ax.set_xlabel("time [us]")
+        ax.set_ylabel("[mm]")
+        ax.set_title("crater size")
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+        save(fig, plots / "crater_size.png")
+    if "eroded_mass" in names:
+        fig, ax = plt.subplots(figsize=(7, 3.2))
+        per = "kg/m" if summary.get("dimension", 2) == 2 else "kg"
+        ax.plot(t, series["eroded_mass"])
+        ax.set_xlabel("time [us]")
+        ax.set_ylabel(f"eroded mass [{per}]")
+        ax.grid(True, alpha=0.3)
+        save(fig, plots / "eroded_mass.png")
+    impacts = folder / "impacts.csv"
+    if impacts.exists() and impacts.stat().st_size > 0:
+        data = read_csv(impacts)
+        if data.size > 0 and "speed" in (data.dtype.names or ()):
+            fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
+            axes[0].hist(data["speed"], bins=20)
+            axes[0].set_xlabel("impact speed [m/s]")
+            axes[0].set_ylabel("impacts")
+            axes[1].hist(data["angle"], bins=18, range=(0, 90))
+            axes[1].set_xlabel("impact angle [deg] (90: normal)")
+            save(fig, plots / "impacts.png")
+    if summary:
+        crater_profiles(folder, summary, plots, profiles)
+
+
+def sweep_plots(folder, plots):
+    data = read_csv(folder / "sweep.csv")
+    names = list(data.dtype.names)
+    swept = names[: names.index("crater_depth")]
+    done = data["status"] == "completed"
+    for key in swept:
+        x = data[key][done].astype(float)
+        others = [k for k in swept if k != key]
+        fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
+        # One line per combination of the other swept values.
+        groups = {tuple(data[k][done][i] for k in others) for i in range(int(done.sum()))} or {()}
+        for g in sorted(groups):
+            sel = np.ones(int(done.sum()), bool)
+            for k, v in zip(others, g):
+                sel &= data[k][done] == v
+            order = np.argsort(x[sel])
+            label = ", ".join(f"{k}={v}" for k, v in zip(others, g)) or None
+            for ax, col in zip(axes, ("crater_depth", "crater_width")):
+                y = data[col][done].astype(float)[sel][order] * 1e3
+                ax.plot(x[sel][order], y, "o-", label=label)
+        for ax, col in zip(axes, ("C_d [mm]", "C_w [mm]")):
+            ax.set_xlabel(key)
+            ax.set_ylabel(col)
+            ax.grid(True, alpha=0.3)
+        if others:
+            axes[0].legend(fontsize=7)
+        save(fig, plots / f"sweep_{key}.png")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folder")
+    parser.add_argument("--profiles", type=int, default=6, help="crater profiles drawn (output times)")
+    args = parser.parse_args()
+    folder = pathlib.Path(args.folder)
+    plots = folder / "plots"
+    if (folder / "sweep.csv").exists():
+        plots.mkdir(exist_ok=True)
+        sweep_plots(folder, plots)
+        return 0
+    if not (folder / "series.csv").exists():
+        print(f"error: {folder} holds neither series.csv (a run) nor sweep.csv (a sweep)", file=sys.stderr)
+        return 2
+    plots.mkdir(exist_ok=True)
+    run_plots(folder, plots, args.profiles)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
