@@ -96,42 +96,56 @@ TEST(Brittle, TensileStrengthFromJH2) {
     EXPECT_NEAR(measured, expected, 0.10 * expected);
 }
 
-// Pure water jet on red sandstone (section 4.3, Table 6 speeds) in the coarse case, 3 us after contact:
-// radial cracks open at both edges of the jet at every speed, and the damage footprint (damaged area
-// still in the specimen plus the area removed) grows with the jet speed, as does the crack count from
-// 313 to 370 m/s (the paper's Fig. 25: two radial cracks at 313 m/s, more radial and lateral ones above).
-TEST(Brittle, WaterJetCracksGrowWithJetSpeed) {
+// Pure water jet on red sandstone (section 4.3, Table 6 speeds) in the coarse case: radial cracks open
+// at both edges of the jet at every speed 3 us after contact, and the damaged area grows with the jet
+// speed at every output from contact (5 us) to 20 us, as in the paper's Fig. 25 (two radial cracks at
+// 313 m/s, more radial and lateral ones above). Before fractured rock kept its JH-2 strength and only
+// detached fragments were removed, a 3-4 mm zone was crushed and removed within 3 us and the damaged
+// area fell with speed after 11 us (docs/validation.md).
+TEST(Brittle, WaterJetDamageGrowsWithJetSpeed) {
     const double rho0 = 2460.0;
-    double last_footprint = 0.0;
+    const std::vector<const char*> speeds = {"313", "343", "370"};
+    std::vector<std::vector<double>> damaged(speeds.size());
     grit::Index first_cracks = 0, last_cracks = 0;
-    for (const char* speed : {"313", "343", "370"}) {
+    for (std::size_t v = 0; v < speeds.size(); ++v) {
+        const char* speed = speeds[v];
         grit::sim::Simulation<2> sim(
-            load_case("waterjet_sandstone_2d/case.toml", {std::string("inlet[0].velocity=") + speed, "time.end=8e-6"}),
+            load_case("waterjet_sandstone_2d/case.toml", {std::string("inlet[0].velocity=") + speed, "time.end=2e-5"}),
             in_memory());
-        const grit::sim::RunSummary s = sim.run();
-        const double damaged_area = s.value("damaged_area"), eroded_mass = s.value("eroded_mass");
-        const auto crack_count = static_cast<grit::Index>(s.value("crack_count"));
-        const double footprint = damaged_area + eroded_mass / rho0;
-        std::printf("%s m/s: damaged area %.2f mm^2, eroded %.2f mm^2, cracks %d, C_d %.2f mm, C_w %.2f mm\n", speed,
-                    damaged_area * 1e6, eroded_mass / rho0 * 1e6, static_cast<int>(crack_count),
-                    s.value("crater_depth") * 1e3, s.value("crater_width") * 1e3);
-        EXPECT_GE(crack_count, 2) << speed;
-        EXPECT_GT(footprint, last_footprint) << speed;
-        last_footprint = footprint;
-        if (first_cracks == 0) first_cracks = crack_count;
-        last_cracks = crack_count;
-        // Damage at both jet edges (x = -0.5 and +0.5 mm), in the top millimetre of the rock.
-        auto& ps = sim.particles();
-        const double* damage = ps.fields().get<double>("damage").data();
-        bool left = false, right = false;
-        for (grit::Index i = 0; i < ps.size(); ++i) {
-            if (ps.phase()[i] != static_cast<std::int32_t>(grit::Phase::solid) || damage[i] < 0.5) continue;
-            const auto& x = ps.position()[i];
-            if (x[1] < -1.0e-3 || x[1] > 0.0) continue;
-            left = left || std::abs(x[0] + 0.5e-3) < 0.5e-3;
-            right = right || std::abs(x[0] - 0.5e-3) < 0.5e-3;
+        for (double t = 5e-6; t <= 2.0e-5 + 1e-12; t += 1e-6) {
+            sim.advance_to(t);
+            const auto values = sim.output_values();
+            for (const auto& o : values)
+                if (o.name == "damaged_area") damaged[v].push_back(o.value);
+            if (std::abs(t - 8e-6) > 1e-12) continue;
+            // 3 us after contact: cracks at both jet edges (x = -0.5 and +0.5 mm) in the top millimetre.
+            double cracks = 0.0, eroded = 0.0, area = 0.0;
+            for (const auto& o : values) {
+                if (o.name == "crack_count") cracks = o.value;
+                if (o.name == "eroded_mass") eroded = o.value;
+                if (o.name == "damaged_area") area = o.value;
+            }
+            std::printf("%s m/s at 8 us: damaged area %.2f mm^2, eroded %.3f mm^2, cracks %d\n", speed, area * 1e6,
+                        eroded / rho0 * 1e6, static_cast<int>(cracks));
+            EXPECT_GE(cracks, 2.0) << speed;
+            if (first_cracks == 0) first_cracks = static_cast<grit::Index>(cracks);
+            last_cracks = static_cast<grit::Index>(cracks);
+            auto& ps = sim.particles();
+            const double* damage = ps.fields().get<double>("damage").data();
+            bool left = false, right = false;
+            for (grit::Index i = 0; i < ps.size(); ++i) {
+                if (ps.phase()[i] != static_cast<std::int32_t>(grit::Phase::solid) || damage[i] < 0.5) continue;
+                const auto& x = ps.position()[i];
+                if (x[1] < -1.0e-3 || x[1] > 0.0) continue;
+                left = left || std::abs(x[0] + 0.5e-3) < 0.5e-3;
+                right = right || std::abs(x[0] - 0.5e-3) < 0.5e-3;
+            }
+            EXPECT_TRUE(left && right) << speed << " m/s: no damage at one of the jet's edges";
         }
-        EXPECT_TRUE(left && right) << speed << " m/s: no damage at one of the jet's edges";
     }
+    for (std::size_t k = 0; k < damaged[0].size(); ++k)
+        for (std::size_t v = 1; v < speeds.size(); ++v)
+            EXPECT_GT(damaged[v][k], damaged[v - 1][k])
+                << "damaged area at t = " << 5 + static_cast<int>(k) << " us: " << speeds[v] << " against " << speeds[v - 1];
     EXPECT_GT(last_cracks, first_cracks);
 }

@@ -104,7 +104,10 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
                                    const core::SymTensor3& strain_rate, const Spin& spin, double pressure,
                                    double density, double dt) noexcept {
     SolidPointState next = s;
-    if (s.damage >= 1.0) {
+    // A failed ductile point carries no shear (eq. 36; it is removed at the end of the step). Fractured
+    // rock keeps eq. (38)'s D = 1 strength sigma_f* = B (P*)^M: comminuted rock under confinement is
+    // a granular solid, not a fluid (JH-2; docs/theory.md).
+    if (s.damage >= 1.0 && !std::is_same_v<Model, JH2>) {
         next.deviatoric_stress = core::SymTensor3::zero();
         next.plastic_strain_rate = 0.0;
         return next;
@@ -165,7 +168,7 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
             next.plastic_strain = s.plastic_strain + d_eps;
             next.plastic_strain_rate = dt > 0.0 ? d_eps / dt : 0.0;
             next.damage = std::min(1.0, s.damage + d_eps / model.failure.failure_strain(pressure, model.strength));
-            const double sigma_y = next.damage >= 1.0 ? 0.0 : model.strength.yield_stress(pressure, next.damage, rate);
+            const double sigma_y = model.strength.yield_stress(pressure, next.damage, rate);
             next.deviatoric_stress = vm_trial > 0.0 ? trial * (sigma_y / vm_trial) : trial;
             const double energy_loss = (sigma_y0 * sigma_y0 - sigma_y * sigma_y) / (2.0 * three_g);
             const double mu = density / model.reference_density - 1.0;

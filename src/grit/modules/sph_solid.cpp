@@ -151,7 +151,7 @@ void SolidModule<Dim>::remove_failed() {
         if (brittle_[static_cast<std::size_t>(mat[i])]) {
             for (Index k = list.begin(i); k < list.end(i); ++k) {
                 const Index j = nb[k];
-                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(x[j] - x[i]) <= reach2) return;
+                if (ph[j] == solid && core::norm2(x[j] - x[i]) <= reach2) return;
             }
         }
         gone[static_cast<std::size_t>(i)] = 1;
