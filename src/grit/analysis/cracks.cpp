@@ -7,36 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "grit/core/disjoint_sets.hpp"
 #include "grit/core/error.hpp"
 #include "grit/neighbors/cell_grid.hpp"
 
 namespace grit::analysis {
 
 namespace {
-
-/// Union-find with path compression (halving); the smaller index becomes the root, so the forest,
-/// like the clusters, does not depend on the order of the unions.
-struct DisjointSets {
-    std::vector<Index> parent;
-    explicit DisjointSets(Index n) : parent(static_cast<std::size_t>(n)) {
-        for (Index i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
-    }
-    Index find(Index i) {
-        while (parent[static_cast<std::size_t>(i)] != i) {
-            auto& p = parent[static_cast<std::size_t>(i)];
-            p = parent[static_cast<std::size_t>(p)];
-            i = p;
-        }
-        return i;
-    }
-    void unite(Index a, Index b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return;
-        if (b < a) std::swap(a, b);
-        parent[static_cast<std::size_t>(b)] = a;
-    }
-};
 
 /// A cell size of at least `link` whose grid over x[0..n) stays small: sparse damage spread over a
 /// large solid would otherwise ask CellGrid::covering for far more cells than particles.
@@ -91,7 +68,7 @@ CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const doubl
     const auto grid = neighbors::CellGrid<Dim>::covering(xd.data(), n, cell_size_for(xd.data(), n, options.link_distance));
     std::vector<Index> order, cell_start;
     neighbors::sort_by_cell(grid, xd.data(), n, order, cell_start);
-    DisjointSets sets(n);
+    core::DisjointSets sets(n);
     for (Index a = 0; a < n; ++a) {
         const auto c = grid.coords(xd[static_cast<std::size_t>(a)]);
         std::array<Index, Dim> lo{}, hi{};

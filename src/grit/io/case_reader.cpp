@@ -300,6 +300,15 @@ void apply_override(toml::table& root, const std::string& assignment) {
         }
         if (last) {
             t->insert_or_assign(name, *value_holder.get("v"));
+            // Keys that are alternatives of each other (the case gives one): setting one from the
+            // command line replaces the other, so `--set jet.pressure=2e8` works on a case that gives
+            // jet.velocity, and a sweep over the mass flow rate on one that gives abrasive.spacing.
+            static const std::pair<const char*, const char*> alternatives[] = {
+                {"jet.velocity", "jet.pressure"}, {"abrasive.mass_flow_rate", "abrasive.spacing"}};
+            for (const auto& [a, b] : alternatives) {
+                if (path == a) t->erase(std::string(b).substr(std::string(b).find('.') + 1));
+                if (path == b) t->erase(std::string(a).substr(std::string(a).find('.') + 1));
+            }
         } else {
             if (!t->contains(name)) t->insert(name, toml::table{});
             t = t->get_as<toml::table>(name);

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 
+#include "grit/core/disjoint_sets.hpp"
 #include "grit/material/solid_model.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sph/pressure.hpp"
@@ -132,9 +133,10 @@ void SolidModule<Dim>::update_stress() {
 template <int Dim>
 void SolidModule<Dim>::remove_failed() {
     // Ductile (eq. 36): a particle with D >= 1 is removed and its mass booked as eroded.
-    // Brittle (JH-2): a fractured particle still carries pressure, so it stays while it touches intact
-    // rock (a crack); it is removed once it is detached, when no solid particle within 1.5 spacings
-    // (its nearest and diagonal neighbours) has D < 1: loose fragments and comminuted rubble.
+    // Brittle (JH-2): a fractured particle keeps pressure and its fractured strength, so it stays while
+    // it belongs to the specimen; it is removed once it is part of a fragment made of fractured rock
+    // only: a cluster of solid particles linked within 1.5 spacings (nearest and diagonal neighbours)
+    // that holds no intact (D < 1) particle. Rubble resting on the specimen stays until carried off.
     auto& ps = state_.particles;
     const double* damage = ps.fields().template get<double>("damage").data();
     const std::int32_t* ph = ps.phase();
@@ -142,20 +144,32 @@ void SolidModule<Dim>::remove_failed() {
     const auto* x = ps.position();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const Index n = ps.size();
-    const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
-    const auto& list = state_.neighbors.list();
-    const Index* nb = list.indices();
     std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
+    bool fractured_rock = false;
     parallel::for_each(n, [&](Index i) {
         if (ph[i] != solid || damage[i] < 1.0) return;
-        if (brittle_[static_cast<std::size_t>(mat[i])]) {
+        gone[static_cast<std::size_t>(i)] = brittle_[static_cast<std::size_t>(mat[i])] ? 2 : 1;
+    });
+    for (Index i = 0; i < n && !fractured_rock; ++i) fractured_rock = gone[static_cast<std::size_t>(i)] == 2;
+    if (fractured_rock) {
+        const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
+        const auto& list = state_.neighbors.list();
+        const Index* nb = list.indices();
+        core::DisjointSets clusters(n);
+        for (Index i = 0; i < n; ++i) {
+            if (ph[i] != solid) continue;
             for (Index k = list.begin(i); k < list.end(i); ++k) {
                 const Index j = nb[k];
-                if (ph[j] == solid && core::norm2(x[j] - x[i]) <= reach2) return;
+                if (j > i && ph[j] == solid && core::norm2(x[j] - x[i]) <= reach2) clusters.unite(i, j);
             }
         }
-        gone[static_cast<std::size_t>(i)] = 1;
-    });
+        std::vector<std::uint8_t> anchored(static_cast<std::size_t>(n), 0);
+        for (Index i = 0; i < n; ++i)
+            if (ph[i] == solid && damage[i] < 1.0) anchored[static_cast<std::size_t>(clusters.find(i))] = 1;
+        for (Index i = 0; i < n; ++i)
+            if (gone[static_cast<std::size_t>(i)] == 2)
+                gone[static_cast<std::size_t>(i)] = anchored[static_cast<std::size_t>(clusters.find(i))] ? 0 : 1;
+    }
     const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
     if (failed == 0) return;
     const double* m = ps.mass();

@@ -281,3 +281,15 @@ TEST(AbrasiveInlet, ContinuesFromItsColumnIndexAndIgnoresTheStepSize) {
             EXPECT_EQ(straight[k][c], resumed[k][c]) << k;
         }
 }
+
+// Setting one of two alternative keys from the command line replaces the other the file gives (a sweep
+// over the pump pressure of a case written with a velocity, over M of one written with y_dis).
+TEST(JetBuilder, AnOverrideReplacesItsAlternative) {
+    const CaseSpec c = read(awj_case, {"jet.pressure=2e8", "abrasive.mass_flow_rate=0.04"});
+    EXPECT_NEAR(c.inlets.front().velocity, 442.7, 0.1);
+    EXPECT_DOUBLE_EQ(c.abrasive.mass_flow_rate, 0.04);
+    const CaseSpec back = read(replaced(awj_case, "velocity = 500.0", "pressure = 2e8"), {"jet.velocity=383"});
+    EXPECT_DOUBLE_EQ(back.inlets.front().velocity, 383.0);
+    // In the file itself both are still an error.
+    EXPECT_TRUE(has(error_of(replaced(awj_case, "velocity = 500.0", "velocity = 500.0\npressure = 2e8")), "not both"));
+}
