@@ -19,6 +19,7 @@
 #include "grit/material/library.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/simulation.hpp"
+#include "grit/sim/version.hpp"
 #include "sweep.hpp"
 
 extern char** environ;
@@ -125,7 +126,7 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
 int main(int argc, char** argv) {
     CLI::App app{"grit: SPH-DEM simulation of erosion by fluids carrying abrasive grains"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "grit " GRIT_VERSION);
+    app.set_version_flag("--version", std::string("grit " GRIT_VERSION " (git ") + grit::sim::git_revision() + ")");
 
     std::string case_file, out;
     std::vector<std::string> sets;
@@ -201,12 +202,12 @@ int main(int argc, char** argv) {
             // Building the particles catches geometry errors too; nothing is written.
             grit::sim::RunOptions options;
             options.write_files = false;
-            if (spec.dimension == 2)
-                grit::sim::Simulation<2>(spec, options);
-            else
-                grit::sim::Simulation<3>(spec, options);
+            // Building the particles and the first step's rates also gives the run's cost.
+            const grit::sim::RunEstimate plan = spec.dimension == 2 ? grit::sim::Simulation<2>(spec, options).estimate()
+                                                                    : grit::sim::Simulation<3>(spec, options).estimate();
             fmt::print("{}: ok ({}D, {} material(s), {} grain material(s))\n", case_file, spec.dimension,
                        spec.materials.size(), spec.grain_materials.size());
+            fmt::print("estimate: {}\n", plan.text());
             return 0;
         }
         for (const auto& m : grit::material::library()) fmt::print("{}\n", grit::material::describe(m));

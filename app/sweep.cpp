@@ -91,11 +91,11 @@ pid_t start_run(const SweepOptions& o, const std::vector<std::string>& point, co
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    // The run's own messages (a blow-up, an error) go to run.log in its folder.
+    // What the run prints (an error, a blow-up) goes to console.log in its folder, beside its run.log.
     fs::create_directories(dir);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    const std::string log = (dir / "run.log").string();
+    const std::string log = (dir / "console.log").string();
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
     pid_t pid = 0;
@@ -157,7 +157,7 @@ int run_sweep(const SweepOptions& o) {
         const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
         if (!o.quiet)
             fmt::print("{}: {} ({:.0f} s since the sweep started)\n", name,
-                       code == 0 ? "completed" : fmt::format("stopped with exit code {} (see its run.log)", code),
+                       code == 0 ? "completed" : fmt::format("stopped with exit code {} (see its console.log)", code),
                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         std::fflush(stdout);
         if (code == 130 || code == 143) {  // interrupted: the others got the signal too

@@ -241,10 +241,10 @@ expect_usage_error "unknown command" "frob" "unknown command" -- frob
 
 VERSION=$(sed -n 's/^project(grit VERSION \([0-9.]*\).*/\1/p' "$ROOT/CMakeLists.txt")
 grit --version
-if [[ $RC -eq 0 ]] && [[ -n $VERSION ]] && [[ $(cat "$W/stdout") == "grit $VERSION" ]]; then
-    pass "grit --version exits 0 and prints 'grit $VERSION'"
+if [[ $RC -eq 0 ]] && [[ -n $VERSION ]] && grep -Eq "^grit $VERSION \(git [0-9a-z.-]+\)$" "$W/stdout"; then
+    pass "grit --version exits 0 and prints 'grit $VERSION (git REVISION)': $(cat "$W/stdout")"
 else
-    fail "grit --version exits 0 and prints 'grit $VERSION'" "exit $RC: $(cat "$W/stdout" "$W/stderr")"
+    fail "grit --version exits 0 and prints 'grit $VERSION (git REVISION)'" "exit $RC: $(cat "$W/stdout" "$W/stderr")"
 fi
 grit --help
 if [[ $RC -eq 0 ]] && grep -q 'run' "$W/stdout" && grep -q -- '--version' "$W/stdout"; then
@@ -286,7 +286,14 @@ else
         "$( [[ -f $T0/series.csv ]] && head -n 3 "$T0/series.csv" | tr '\n' '|' || echo missing)"
 fi
 
-KEYS=(particles steps wall_time_s particle_steps_per_second end_time)
+if [[ -f $T0/run.log ]] && grep -q 'grit .* (git ' "$T0/run.log" && grep -q 'estimate: ~' "$T0/run.log" &&
+    grep -q '\[info\] completed: ' "$T0/run.log"; then
+    pass "t0: run.log names the version, the estimate and the end"
+else
+    fail "t0: run.log names the version, the estimate and the end" "$(cat "$T0/run.log" 2>&1)"
+fi
+
+KEYS=(particles steps wall_time_s particle_steps_per_second end_time git_revision)
 if [[ ! -f $T0/summary.json ]]; then
     fail "t0: summary.json has the run's keys" "missing"
 elif [[ -n $JSON_PY ]]; then
@@ -583,6 +590,20 @@ expect_restart_error "another particle spacing" "numerics.particle_spacing" "$DE
 cp -- "${ckpts[-1]}" "$W/truncated.h5"
 truncate -s 2000 "$W/truncated.h5"
 expect_restart_error "a truncated checkpoint" "truncated.h5" "$DEMO" --restart "$W/truncated.h5"
+
+# --- run estimates ----------------------------------------------------------------------------------------
+grit check "$ROOT/cases/demo.toml"
+if [[ $RC -eq 0 ]] && grep -Eq '^estimate: ~[0-9.e+]+ steps, ~[0-9.e+]+ particles, [0-9]+ outputs' "$W/stdout"; then
+    pass "check prints the estimate: $(grep estimate "$W/stdout")"
+else
+    fail "check prints the estimate" "exit $RC: $(cat "$W/stdout" "$W/stderr")"
+fi
+grit check "$ROOT/cases/demo.toml" --set time.end=10
+if [[ $RC -eq 2 ]] && grep -q "key 'time.end' = 10" "$W/stderr" && grep -q 'output.max_outputs' "$W/stderr"; then
+    pass "a time.end in the wrong unit is refused: $(cat "$W/stderr")"
+else
+    fail "a time.end in the wrong unit is refused" "exit $RC: $(cat "$W/stderr")"
+fi
 
 # --- sweep and plot -------------------------------------------------------------------------------------
 AWJ=$ROOT/cases/awj_aluminium_2d/case.toml

@@ -744,6 +744,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     const Section top(&keys, &root, "");
     CaseSpec c;
     c.source = file;
+    c.overrides = overrides;
     c.name = file.stem().string() == "case" ? file.parent_path().filename().string() : file.stem().string();
     if (c.name.empty()) c.name = "case";
 
@@ -762,6 +763,13 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.write_snapshots = output.flag_or("snapshots", true);
     c.checkpoint_interval = output.number_or("checkpoint_interval", 0.0, non_negative("[s]"));
     c.checkpoint_keep = output.integer_or("checkpoint_keep", c.checkpoint_keep, 1, 1000000);
+    // A time.end in the wrong unit (10 s for 10 us) would write millions of outputs: refuse it here.
+    const double max_outputs = output.number_or("max_outputs", 100000.0, positive("[-]"));
+    if (c.end_time / c.output_interval + 1.0 > max_outputs)
+        time.fail("end", fmt::format("with output.interval = {} s the run writes {:.4g} outputs (snapshots and series "
+                                     "rows), more than output.max_outputs = {:g}; raise output.interval, or "
+                                     "output.max_outputs to allow it",
+                                     c.output_interval, std::floor(c.end_time / c.output_interval) + 1.0, max_outputs));
 
     const Section numerics = top.section("numerics");
     const bool sph_blocks = top.has("fluid") || top.has("solid") || top.has("inlet") || top.has("wall");

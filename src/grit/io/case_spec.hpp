@@ -159,6 +159,7 @@ struct CouplingSpec {
 
 struct CaseSpec {
     std::filesystem::path source;  ///< the case file
+    std::vector<std::string> overrides;  ///< the --set assignments applied to it, in order
     std::string name;              ///< output base name
     std::string title;
     int dimension = 2;

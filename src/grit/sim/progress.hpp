@@ -1,10 +1,12 @@
-// The progress line shown on a terminal: percent, simulated time, steps per second, ETA.
+// The progress line shown on a terminal: percent, simulated time, step, particles and grains, steps per
+// second, elapsed wall time, ETA ("done" at the end).
 #pragma once
 
 #include <cstdio>
 #include <string>
 
 #include "grit/core/timer.hpp"
+#include "grit/core/types.hpp"
 
 namespace grit::sim {
 
@@ -12,7 +14,7 @@ class Progress {
 public:
     /// Shows progress only when `enabled` and standard error is a terminal.
     explicit Progress(bool enabled);
-    void update(double t, double end_time, long step, bool force = false);
+    void update(double t, double end_time, long step, Index particles, Index grains, bool force = false);
     void finish();
 
 private:

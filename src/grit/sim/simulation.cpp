@@ -25,7 +25,9 @@
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
+#include "grit/io/particle_budget.hpp"
 #include "grit/sim/progress.hpp"
+#include "grit/sim/run_log.hpp"
 #include "grit/sim/version.hpp"
 
 namespace grit::sim {
@@ -390,6 +392,45 @@ void Simulation<Dim>::prime() {
     last_good_ = state_.particles;
 }
 
+std::string RunEstimate::text() const {
+    auto size = [](double b) {
+        return b >= 1e9 ? fmt::format("{:.3g} GB", b / 1e9) : b >= 1e6 ? fmt::format("{:.3g} MB", b / 1e6)
+                                                                        : fmt::format("{:.3g} kB", b / 1e3);
+    };
+    const long s = static_cast<long>(wall_seconds);
+    const std::string wall = s >= 86400 ? fmt::format("{:.1f} days", wall_seconds / 86400.0)
+                             : s >= 3600 ? fmt::format("{:.1f} h", wall_seconds / 3600.0)
+                             : s >= 60   ? fmt::format("{:.1f} min", wall_seconds / 60.0)
+                                         : fmt::format("{:.0f} s", wall_seconds);
+    return fmt::format("~{:.3g} steps, ~{:.3g} particles, {:.0f} outputs (~{} of snapshots), ~{} wall at {:.2g} "
+                       "particle-steps/s",
+                       steps, particles, outputs, size(snapshot_bytes), wall, rate);
+}
+
+template <int Dim>
+RunEstimate Simulation<Dim>::estimate() {
+    if (!primed_) prime();
+    RunEstimate e;
+    const double remaining = std::max(0.0, spec_.end_time - state_.clock.time);
+    const double dt = state_.clock.dt_stable > 0.0 ? state_.clock.dt_stable : state_.clock.dt;
+    e.steps = dt > 0.0 ? std::ceil(remaining / dt) : 0.0;
+    // The inlets' particles by time.end, as the budget counts them, on top of what exists now.
+    const auto budget = io::estimate_particles(spec_);
+    const double grains = state_.grains ? static_cast<double>(state_.grains->grains().size()) : 0.0;
+    e.particles = static_cast<double>(state_.particles.size()) + budget.inlets + std::max(grains, budget.grains);
+    e.outputs = std::floor(remaining / spec_.output_interval + 1e-9) + 1.0;
+    double bytes_per_particle = 0.0;  // the snapshot's columns, as they are held in memory
+    const auto n = static_cast<double>(state_.particles.size());
+    for (const auto* f : state_.particles.fields().all())
+        if (f->is_output() && n > 0.0) bytes_per_particle += static_cast<double>(f->bytes().size()) / n;
+    e.snapshot_bytes = spec_.write_snapshots ? e.outputs * e.particles * bytes_per_particle : 0.0;
+    // A typical rate of this code per thread (docs/performance.md: 0.7-1e6 particle-steps/s per core
+    // for 2D jets on solids); the run's own rate is in summary.json.
+    e.rate = 7.5e5 * parallel::max_threads();
+    e.wall_seconds = e.steps * e.particles / e.rate;
+    return e;
+}
+
 template <int Dim>
 void Simulation<Dim>::step() {
     const double dt = state_.clock.dt;  // the time_step stage replaces clock.dt with the next step's value
@@ -496,6 +537,7 @@ void Simulation<Dim>::save_checkpoint(const std::filesystem::path& file) {
         h5.write("format", "grit checkpoint");
         h5.write("format_version", checkpoint_format_version);
         h5.write("grit_version", std::string(version));
+        h5.write("git_revision", std::string(git_revision()));
         h5.write("case_name", spec_.name);
         h5.write("case_file", spec_.source.string());
         h5.write("case_text", read_text(spec_.source));
@@ -637,6 +679,7 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["status"] = s.status;
     if (!message.empty()) j["message"] = message;
     j["grit_version"] = version;
+    j["git_revision"] = git_revision();
     j["dimension"] = Dim;
     j["case_file"] = spec_.source.string();
     j["particle_spacing"] = spec_.particle_spacing;
@@ -666,13 +709,40 @@ RunSummary Simulation<Dim>::run() {
     const bool restart = !options_.restart.empty();
     if (restart) load_checkpoint(resolve_checkpoint(options_.restart));
     if (options_.write_files) open_output(restart);
+    std::unique_ptr<RunLog> log;
+    if (options_.write_files) {
+        log = std::make_unique<RunLog>(options_.output_dir, restart);
+        log->info(fmt::format("grit {} (git {}), {} thread(s)", version, git_revision(), parallel::max_threads()));
+        log->info(fmt::format("case {} ('{}'), {}D", spec_.source.string(), spec_.title, Dim));
+        for (const auto& o : spec_.overrides) log->info("--set " + o);
+        if (restart) log->info(fmt::format("restarted from {} at step {} (t = {:.9g} s)", restarted_from_.string(),
+                                           state_.clock.step, state_.clock.time));
+        log->info(fmt::format("{} particles, {} grains, dx = {} m, end time {} s, output every {} s",
+                              state_.particles.size(), state_.grains ? state_.grains->grains().size() : Index{0},
+                              spec_.particle_spacing, spec_.end_time, spec_.output_interval));
+    }
     core::Stopwatch clock;
     Progress progress(!options_.quiet);
     StopSignals signals;
     auto& c = state_.clock;
+    auto show_progress = [&](bool force) {
+        progress.update(c.time, spec_.end_time, c.step, state_.particles.size(),
+                        state_.grains ? state_.grains->grains().size() : Index{0}, force);
+    };
     try {
+        if (!restart) prime();
+        const RunEstimate plan = estimate();
+        if (!options_.quiet) fmt::print(stderr, "estimate: {}\n", plan.text());
+        if (log) log->info("estimate: " + plan.text());
+        if (plan.wall_seconds > 86400.0) {
+            const std::string warning = fmt::format(
+                "warning: this run may take {:.1f} days (time.end = {} s, numerics.particle_spacing = {} m); "
+                "Ctrl-C stops it with a checkpoint to continue from",
+                plan.wall_seconds / 86400.0, spec_.end_time, spec_.particle_spacing);
+            if (!options_.quiet) fmt::print(stderr, "{}\n", warning);
+            if (log) log->warn(warning);
+        }
         if (!restart) {
-            prime();
             write_output();
             next_output_ = spec_.output_interval;
             next_checkpoint_ = spec_.checkpoint_interval;
@@ -682,7 +752,7 @@ RunSummary Simulation<Dim>::run() {
             const double target = std::min(end, next_output_);
             if (c.time + c.dt > target) c.dt = target - c.time;  // land exactly on the output time
             step();
-            progress.update(c.time, end, c.step);
+            show_progress(false);
             if (c.time >= target * (1.0 - 1e-12)) {
                 write_output();
                 while (next_output_ <= c.time * (1.0 + 1e-12)) next_output_ += spec_.output_interval;
@@ -706,19 +776,25 @@ RunSummary Simulation<Dim>::run() {
                     message += "; continue with --restart " + options_.output_dir.string();
                 }
                 write_summary(summarize(clock.seconds(), "interrupted"), message);
+                if (log) log->warn(message);
                 throw Interrupted(signal, message);
             }
         }
-        progress.update(c.time, end, c.step, true);
+        show_progress(true);
         progress.finish();
     } catch (const core::BlowUpError& e) {
         progress.finish();
         write_summary(summarize(clock.seconds(), "blow_up"), e.what());
+        if (log) log->error(e.what());
         throw;
     }
     write_checkpoint();  // a finished run can be extended: --restart DIR --set time.end=...
     RunSummary summary = summarize(clock.seconds(), "completed");
     write_summary(summary, "");
+    if (log)
+        log->info(fmt::format("completed: {} steps to t = {:.6g} s, {} particles, {:.3g} s wall, {:.3g} particle-steps/s",
+                              summary.steps, summary.end_time, summary.particles, summary.wall_time_s,
+                              summary.particle_steps_per_second));
     return summary;
 }
 

@@ -51,6 +51,19 @@ struct RunSummary {
     double value(const std::string& name) const;
 };
 
+/// What a run will cost, from its first time step (before it runs): shown by `grit check` and at the
+/// start of `grit run`, written to run.log.
+struct RunEstimate {
+    double steps = 0.0;            ///< time.end / the first stable step (the step changes during a run)
+    double particles = 0.0;        ///< SPH particles and grains at the start plus what the inlets emit
+    double outputs = 0.0;          ///< output times: time.end / output.interval + 1
+    double snapshot_bytes = 0.0;   ///< all snapshots together [B] (at the largest particle count)
+    double wall_seconds = 0.0;     ///< at `rate` particle-steps per second
+    double rate = 0.0;             ///< the assumed particle-steps per second (threads x per-thread rate)
+    /// One line: "~N steps, ~P particles, O outputs (~S of snapshots), ~T wall at R particle-steps/s".
+    std::string text() const;
+};
+
 /// Thrown when the run stopped on SIGINT or SIGTERM after writing its checkpoint; the CLI exits with
 /// 128 + signal (130 for Ctrl-C, 143 for SIGTERM).
 class Interrupted : public std::runtime_error {
@@ -84,6 +97,8 @@ public:
     void advance_to(double target, const std::function<void()>& after_each_step = {});
     /// Computes the rates of the current state (before the first step).
     void prime();
+    /// The cost of running to time.end from the current state (primes it if needed).
+    RunEstimate estimate();
 
     /// Writes the run state and every module's own state to `file` (atomically: a temporary file, then
     /// a rename). Continuing from it is bit-identical to not stopping.

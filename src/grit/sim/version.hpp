@@ -1,4 +1,5 @@
-// grit's version (CMake's project(VERSION)), written to summary.json and checkpoints.
+// grit's version (CMake's project(VERSION)) and the git revision it was built from, written to
+// summary.json, run.log and checkpoints.
 #pragma once
 
 namespace grit::sim {
@@ -7,5 +8,7 @@ namespace grit::sim {
 #define GRIT_VERSION "unknown"
 #endif
 inline constexpr const char* version = GRIT_VERSION;
+/// `git describe --always --dirty` when the build was configured ("unknown" outside a checkout).
+const char* git_revision() noexcept;
 
 }  // namespace grit::sim
