@@ -599,7 +599,7 @@ else
     fail "check prints the estimate" "exit $RC: $(cat "$W/stdout" "$W/stderr")"
 fi
 grit check "$ROOT/cases/demo.toml" --set time.end=10
-if [[ $RC -eq 2 ]] && grep -q "key 'time.end' = 10" "$W/stderr" && grep -q 'output.max_outputs' "$W/stderr"; then
+if [[ $RC -eq 2 ]] && grep -q "key 'time.end' = 10:" "$W/stderr" && grep -q 'output.max_outputs' "$W/stderr"; then
     pass "a time.end in the wrong unit is refused: $(cat "$W/stderr")"
 else
     fail "a time.end in the wrong unit is refused" "exit $RC: $(cat "$W/stderr")"

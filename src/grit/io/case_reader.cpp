@@ -766,7 +766,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     // A time.end in the wrong unit (10 s for 10 us) would write millions of outputs: refuse it here.
     const double max_outputs = output.number_or("max_outputs", 100000.0, positive("[-]"));
     if (c.end_time / c.output_interval + 1.0 > max_outputs)
-        time.fail("end", fmt::format("with output.interval = {} s the run writes {:.4g} outputs (snapshots and series "
+        time.fail("end", fmt::format("with output.interval = {} s the run writes {:.0f} outputs (snapshots and series "
                                      "rows), more than output.max_outputs = {:g}; raise output.interval, or "
                                      "output.max_outputs to allow it",
                                      c.output_interval, std::floor(c.end_time / c.output_interval) + 1.0, max_outputs));

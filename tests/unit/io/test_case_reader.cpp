@@ -687,7 +687,7 @@ TEST_F(CaseReaderTest, InletEstimateCountsEveryLayerUntilTheEnd) {
     const CaseSpec c = read_ok(replaced(minimal_2d, "[domain]", inlet));
     EXPECT_DOUBLE_EQ(estimate_particles(c).inlets, 8.0 * 52.0);
     EXPECT_DOUBLE_EQ(estimate_particles(read_ok(replaced(minimal_2d, "[domain]", inlet), {"inlet[0].stop=0.1"})).inlets, 0.0);
-    expect_error(replaced(minimal_2d, "[domain]", inlet), {"time.end=1e6"},
+    expect_error(replaced(minimal_2d, "[domain]", inlet), {"time.end=1e6", "output.interval=1e3"},
                  {"numerics.particle_spacing = 0.015625 m with inlets until time.end = 1000000 s", "numerics.max_particles"});
 }
 
@@ -746,3 +746,9 @@ TEST_F(CaseReaderTest, MalformedOverride) {
 }
 
 }  // namespace
+
+// A time.end in the wrong unit (seconds for microseconds) is caught by the number of outputs it implies.
+TEST_F(CaseReaderTest, AbsurdNumberOfOutputsIsRefused) {
+    expect_error(minimal_2d, {"time.end=2e4"}, {"key 'time.end' = 20000", "160001 outputs", "output.max_outputs = 100000"});
+    (void)read_ok(minimal_2d, {"time.end=2e4", "output.max_outputs=1e6"});
+}
