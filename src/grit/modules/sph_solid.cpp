@@ -10,6 +10,11 @@
 
 namespace grit::modules {
 
+namespace {
+/// rho / rho0 below which fractured rock counts as loose rubble (removed).
+constexpr double rubble_dilation = 0.9;
+}  // namespace
+
 template <int Dim>
 SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup, const SphModule<Dim>& sph)
     : state_(state), setup_(setup), sph_(sph) {
@@ -23,7 +28,11 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     f.add<double>("bulking_pressure", 0.0, true);
     f.add<std::int32_t>("fixed", 0, true);  // clamped particles (set by the open-boundaries module)
 
-    for (const auto& m : setup.spec.materials) brittle_.push_back(std::holds_alternative<material::JH2>(m.solid_model));
+    for (const auto& m : setup.spec.materials) {
+        const auto* jh2 = std::get_if<material::JH2>(&m.solid_model);
+        brittle_.push_back(jh2 != nullptr);
+        rubble_density_.push_back(jh2 ? rubble_dilation * jh2->reference_density : 0.0);
+    }
     parameters_.gravity = core::to_vec<Dim>(setup.spec.gravity);
     parameters_.artificial_stress = setup.spec.artificial_stress;
     parameters_.spacing = setup.spacing;
@@ -136,8 +145,11 @@ void SolidModule<Dim>::remove_failed() {
     // Brittle (JH-2): a fractured particle keeps pressure and its fractured strength, so it stays while
     // it belongs to the specimen; it is removed once it is part of a fragment made of fractured rock
     // only: a cluster of solid particles linked within 1.5 spacings (nearest and diagonal neighbours)
-    // that holds no intact (D < 1) particle. Rubble resting on the specimen stays until carried off.
+    // that holds no intact (D < 1) particle. Rubble resting on the specimen stays until carried off;
+    // fractured rock that has dilated by more than 10 % (rho < 0.9 rho0) has come apart from its
+    // neighbours (it holds no tension) and goes too: carried in the water, such particles ran away.
     auto& ps = state_.particles;
+    const double* rho = ps.density();
     const double* damage = ps.fields().template get<double>("damage").data();
     const std::int32_t* ph = ps.phase();
     const std::int32_t* mat = ps.material();
@@ -148,7 +160,8 @@ void SolidModule<Dim>::remove_failed() {
     bool fractured_rock = false;
     parallel::for_each(n, [&](Index i) {
         if (ph[i] != solid || damage[i] < 1.0) return;
-        gone[static_cast<std::size_t>(i)] = brittle_[static_cast<std::size_t>(mat[i])] ? 2 : 1;
+        const auto k = static_cast<std::size_t>(mat[i]);
+        gone[static_cast<std::size_t>(i)] = brittle_[k] && rho[i] >= rubble_density_[k] ? 2 : 1;
     });
     for (Index i = 0; i < n && !fractured_rock; ++i) fractured_rock = gone[static_cast<std::size_t>(i)] == 2;
     if (fractured_rock) {

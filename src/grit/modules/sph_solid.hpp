@@ -34,6 +34,7 @@ private:
     sph::SolidWorkspace workspace_;
     std::uint64_t workspace_generation_ = 0;
     std::vector<bool> brittle_;  ///< per material: a JH-2 solid (fractured particles stay until detached)
+    std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
 };
 
 extern template class SolidModule<2>;
