@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+#include "grit/boundary/section_axes.hpp"
+
 namespace grit::boundary {
 
 namespace {
@@ -21,23 +23,7 @@ AbrasiveInlet<Dim>::AbrasiveInlet(const io::AbrasiveSpec& spec, const io::InletS
         direction_[k] = jet.direction[static_cast<std::size_t>(k)];
         motion_[k] = jet.motion.empty() ? 0.0 : jet.motion[static_cast<std::size_t>(k)];
     }
-    Vec t1 = Vec::zero();
-    if constexpr (Dim == 2) {
-        t1[0] = -direction_[1];
-        t1[1] = direction_[0];
-        across_[0] = t1;
-    } else {
-        Vec helper = Vec::zero();
-        helper[std::abs(direction_[0]) < 0.9 ? 0 : 1] = 1.0;
-        t1 = helper - direction_ * core::dot(helper, direction_);
-        t1 *= 1.0 / core::norm(t1);
-        Vec t2;
-        t2[0] = direction_[1] * t1[2] - direction_[2] * t1[1];
-        t2[1] = direction_[2] * t1[0] - direction_[0] * t1[2];
-        t2[2] = direction_[0] * t1[1] - direction_[1] * t1[0];
-        across_[0] = t1;
-        across_[1] = t2;
-    }
+    across_ = section_axes<Dim>(direction_);
     period_ = spec.spacing / jet_velocity_;
 }
 

@@ -6,6 +6,7 @@
 // its entry time.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -49,7 +50,7 @@ private:
     io::AbrasiveSpec spec_;
     double jet_velocity_, jet_radius_;
     Vec nozzle_, direction_, motion_;
-    Vec across_[Dim - 1];  ///< orthonormal directions spanning the nozzle section
+    std::array<Vec, Dim - 1> across_;  ///< orthonormal directions spanning the nozzle section
     double period_;        ///< y_dis / v_jet [s]
     std::int64_t next_column_ = 0;
 };

@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "grit/boundary/section_axes.hpp"
+
 namespace grit::boundary {
 
 template <int Dim>
@@ -13,31 +15,17 @@ JetInlet<Dim>::JetInlet(const io::InletSpec& spec, double spacing, double densit
         direction_[k] = spec.direction[static_cast<std::size_t>(k)];
         motion_[k] = spec.motion.empty() ? 0.0 : spec.motion[static_cast<std::size_t>(k)];
     }
-    // Orthonormal directions spanning the inlet section.
-    Vec t1 = Vec::zero();
-    if constexpr (Dim == 2) {
-        t1[0] = -direction_[1];
-        t1[1] = direction_[0];
-    } else {
-        Vec helper = Vec::zero();
-        helper[std::abs(direction_[0]) < 0.9 ? 0 : 1] = 1.0;
-        t1 = helper - direction_ * core::dot(helper, direction_);
-        t1 *= 1.0 / core::norm(t1);
-    }
+    const auto axes = section_axes<Dim>(direction_);  // spanning the inlet section
     const double radius = 0.5 * spec.diameter;
     const long n = std::lround(std::floor(spec.diameter / spacing + 1e-6));
     for (long i = 0; i < n; ++i) {
         const double s = (static_cast<double>(i) + 0.5) * spacing - 0.5 * static_cast<double>(n) * spacing;
         if constexpr (Dim == 2) {
-            layer_.push_back(t1 * s);
+            layer_.push_back(axes[0] * s);
         } else {
-            Vec t2 = Vec::zero();
-            t2[0] = direction_[1] * t1[2] - direction_[2] * t1[1];
-            t2[1] = direction_[2] * t1[0] - direction_[0] * t1[2];
-            t2[2] = direction_[0] * t1[1] - direction_[1] * t1[0];
             for (long j = 0; j < n; ++j) {
                 const double u = (static_cast<double>(j) + 0.5) * spacing - 0.5 * static_cast<double>(n) * spacing;
-                if (s * s + u * u <= radius * radius) layer_.push_back(t1 * s + t2 * u);
+                if (s * s + u * u <= radius * radius) layer_.push_back(axes[0] * s + axes[1] * u);
             }
         }
     }
