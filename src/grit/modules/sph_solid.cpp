@@ -168,17 +168,33 @@ void SolidModule<Dim>::remove_failed() {
         const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
         const auto& list = state_.neighbors.list();
         const Index* nb = list.indices();
-        core::DisjointSets clusters(n);
-        for (Index i = 0; i < n; ++i) {
-            if (ph[i] != solid) continue;
+        // A path from a fractured particle to intact rock runs through fractured particles and ends in
+        // one fractured-intact link: the clusters need only the links between fractured particles, and
+        // a cluster is anchored when a member touches intact rock (the answer of clustering every solid
+        // particle, at the cost of the fractured ones only).
+        auto fractured = [&](Index i) { return ph[i] == solid && damage[i] >= 1.0; };
+        std::vector<std::uint8_t> touches_intact(static_cast<std::size_t>(n), 0);
+        parallel::for_each(n, [&](Index i) {
+            if (!fractured(i)) return;
             for (Index k = list.begin(i); k < list.end(i); ++k) {
                 const Index j = nb[k];
-                if (j > i && ph[j] == solid && core::norm2(x[j] - x[i]) <= reach2) clusters.unite(i, j);
+                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(x[j] - x[i]) <= reach2) {
+                    touches_intact[static_cast<std::size_t>(i)] = 1;
+                    return;
+                }
+            }
+        });
+        core::DisjointSets clusters(n);
+        for (Index i = 0; i < n; ++i) {
+            if (!fractured(i)) continue;
+            for (Index k = list.begin(i); k < list.end(i); ++k) {
+                const Index j = nb[k];
+                if (j > i && fractured(j) && core::norm2(x[j] - x[i]) <= reach2) clusters.unite(i, j);
             }
         }
         std::vector<std::uint8_t> anchored(static_cast<std::size_t>(n), 0);
         for (Index i = 0; i < n; ++i)
-            if (ph[i] == solid && damage[i] < 1.0) anchored[static_cast<std::size_t>(clusters.find(i))] = 1;
+            if (touches_intact[static_cast<std::size_t>(i)]) anchored[static_cast<std::size_t>(clusters.find(i))] = 1;
         for (Index i = 0; i < n; ++i)
             if (gone[static_cast<std::size_t>(i)] == 2)
                 gone[static_cast<std::size_t>(i)] = anchored[static_cast<std::size_t>(clusters.find(i))] ? 0 : 1;
