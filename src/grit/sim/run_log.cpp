@@ -1,8 +1,12 @@
 // run.log.
 #include "grit/sim/run_log.hpp"
 
+#include <fmt/format.h>
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/spdlog.h>
+
+#include "grit/parallel/parallel.hpp"
+#include "grit/sim/version.hpp"
 
 namespace grit::sim {
 
@@ -14,6 +18,16 @@ RunLog::RunLog(const std::filesystem::path& dir, bool append) {
 }
 
 RunLog::~RunLog() = default;
+
+void RunLog::start(const io::CaseSpec& spec, Index particles, Index grains, const std::string& restarted_from,
+                   long step, double time) {
+    info(fmt::format("grit {} (git {}), {} thread(s)", version, git_revision(), parallel::max_threads()));
+    info(fmt::format("case {} ('{}'), {}D", spec.source.string(), spec.title, spec.dimension));
+    for (const auto& o : spec.overrides) info("--set " + o);
+    if (!restarted_from.empty()) info(fmt::format("restarted from {} at step {} (t = {:.9g} s)", restarted_from, step, time));
+    info(fmt::format("{} particles, {} grains, dx = {} m, end time {} s, output every {} s", particles, grains,
+                     spec.particle_spacing, spec.end_time, spec.output_interval));
+}
 
 void RunLog::info(const std::string& line) { logger_->info(line); }
 void RunLog::warn(const std::string& line) { logger_->warn(line); }

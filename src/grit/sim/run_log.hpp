@@ -7,6 +7,9 @@
 #include <memory>
 #include <string>
 
+#include "grit/core/types.hpp"
+#include "grit/io/case_spec.hpp"
+
 namespace spdlog {
 class logger;
 }
@@ -21,6 +24,10 @@ public:
     RunLog(const RunLog&) = delete;
     RunLog& operator=(const RunLog&) = delete;
 
+    /// The header of a run: version and revision, threads, the case, every --set, a restart's origin,
+    /// the particle count and times.
+    void start(const io::CaseSpec& spec, Index particles, Index grains, const std::string& restarted_from,
+               long step, double time);
     void info(const std::string& line);
     void warn(const std::string& line);
     void error(const std::string& line);

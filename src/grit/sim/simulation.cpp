@@ -25,8 +25,8 @@
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
-#include "grit/io/particle_budget.hpp"
 #include "grit/sim/progress.hpp"
+#include "grit/sim/run_estimate.hpp"
 #include "grit/sim/run_log.hpp"
 #include "grit/sim/version.hpp"
 
@@ -392,43 +392,10 @@ void Simulation<Dim>::prime() {
     last_good_ = state_.particles;
 }
 
-std::string RunEstimate::text() const {
-    auto size = [](double b) {
-        return b >= 1e9 ? fmt::format("{:.3g} GB", b / 1e9) : b >= 1e6 ? fmt::format("{:.3g} MB", b / 1e6)
-                                                                        : fmt::format("{:.3g} kB", b / 1e3);
-    };
-    const long s = static_cast<long>(wall_seconds);
-    const std::string wall = s >= 86400 ? fmt::format("{:.1f} days", wall_seconds / 86400.0)
-                             : s >= 3600 ? fmt::format("{:.1f} h", wall_seconds / 3600.0)
-                             : s >= 60   ? fmt::format("{:.1f} min", wall_seconds / 60.0)
-                                         : fmt::format("{:.0f} s", wall_seconds);
-    return fmt::format("~{:.3g} steps, ~{:.3g} particles, {:.0f} outputs (~{} of snapshots), ~{} wall at {:.2g} "
-                       "particle-steps/s",
-                       steps, particles, outputs, size(snapshot_bytes), wall, rate);
-}
-
 template <int Dim>
 RunEstimate Simulation<Dim>::estimate() {
     if (!primed_) prime();
-    RunEstimate e;
-    const double remaining = std::max(0.0, spec_.end_time - state_.clock.time);
-    const double dt = state_.clock.dt_stable > 0.0 ? state_.clock.dt_stable : state_.clock.dt;
-    e.steps = dt > 0.0 ? std::ceil(remaining / dt) : 0.0;
-    // The inlets' particles by time.end, as the budget counts them, on top of what exists now.
-    const auto budget = io::estimate_particles(spec_);
-    const double grains = state_.grains ? static_cast<double>(state_.grains->grains().size()) : 0.0;
-    e.particles = static_cast<double>(state_.particles.size()) + budget.inlets + std::max(grains, budget.grains);
-    e.outputs = std::floor(remaining / spec_.output_interval + 1e-9) + 1.0;
-    double bytes_per_particle = 0.0;  // the snapshot's columns, as they are held in memory
-    const auto n = static_cast<double>(state_.particles.size());
-    for (const auto* f : state_.particles.fields().all())
-        if (f->is_output() && n > 0.0) bytes_per_particle += static_cast<double>(f->bytes().size()) / n;
-    e.snapshot_bytes = spec_.write_snapshots ? e.outputs * e.particles * bytes_per_particle : 0.0;
-    // A typical rate of this code per thread (docs/performance.md: 0.7-1e6 particle-steps/s per core
-    // for 2D jets on solids); the run's own rate is in summary.json.
-    e.rate = 7.5e5 * parallel::max_threads();
-    e.wall_seconds = e.steps * e.particles / e.rate;
-    return e;
+    return estimate_run(spec_, state_);
 }
 
 template <int Dim>
@@ -712,14 +679,8 @@ RunSummary Simulation<Dim>::run() {
     std::unique_ptr<RunLog> log;
     if (options_.write_files) {
         log = std::make_unique<RunLog>(options_.output_dir, restart);
-        log->info(fmt::format("grit {} (git {}), {} thread(s)", version, git_revision(), parallel::max_threads()));
-        log->info(fmt::format("case {} ('{}'), {}D", spec_.source.string(), spec_.title, Dim));
-        for (const auto& o : spec_.overrides) log->info("--set " + o);
-        if (restart) log->info(fmt::format("restarted from {} at step {} (t = {:.9g} s)", restarted_from_.string(),
-                                           state_.clock.step, state_.clock.time));
-        log->info(fmt::format("{} particles, {} grains, dx = {} m, end time {} s, output every {} s",
-                              state_.particles.size(), state_.grains ? state_.grains->grains().size() : Index{0},
-                              spec_.particle_spacing, spec_.end_time, spec_.output_interval));
+        log->start(spec_, state_.particles.size(), state_.grains ? state_.grains->grains().size() : Index{0},
+                   restart ? restarted_from_.string() : std::string(), state_.clock.step, state_.clock.time);
     }
     core::Stopwatch clock;
     Progress progress(!options_.quiet);
@@ -734,11 +695,7 @@ RunSummary Simulation<Dim>::run() {
         const RunEstimate plan = estimate();
         if (!options_.quiet) fmt::print(stderr, "estimate: {}\n", plan.text());
         if (log) log->info("estimate: " + plan.text());
-        if (plan.wall_seconds > 86400.0) {
-            const std::string warning = fmt::format(
-                "warning: this run may take {:.1f} days (time.end = {} s, numerics.particle_spacing = {} m); "
-                "Ctrl-C stops it with a checkpoint to continue from",
-                plan.wall_seconds / 86400.0, spec_.end_time, spec_.particle_spacing);
+        if (const std::string warning = plan.warning(spec_); !warning.empty()) {
             if (!options_.quiet) fmt::print(stderr, "{}\n", warning);
             if (log) log->warn(warning);
         }

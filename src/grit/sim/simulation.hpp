@@ -14,6 +14,7 @@
 #include "grit/io/series_writer.hpp"
 #include "grit/sim/module.hpp"
 #include "grit/sim/pipeline.hpp"
+#include "grit/sim/run_estimate.hpp"
 #include "grit/sim/state.hpp"
 #include "grit/sph/kernels.hpp"
 
@@ -49,19 +50,6 @@ struct RunSummary {
 
     /// The value named `name` (throws std::out_of_range if there is none).
     double value(const std::string& name) const;
-};
-
-/// What a run will cost, from its first time step (before it runs): shown by `grit check` and at the
-/// start of `grit run`, written to run.log.
-struct RunEstimate {
-    double steps = 0.0;            ///< time.end / the first stable step (the step changes during a run)
-    double particles = 0.0;        ///< SPH particles and grains at the start plus what the inlets emit
-    double outputs = 0.0;          ///< output times: time.end / output.interval + 1
-    double snapshot_bytes = 0.0;   ///< all snapshots together [B] (at the largest particle count)
-    double wall_seconds = 0.0;     ///< at `rate` particle-steps per second
-    double rate = 0.0;             ///< the assumed particle-steps per second (threads x per-thread rate)
-    /// One line: "~N steps, ~P particles, O outputs (~S of snapshots), ~T wall at R particle-steps/s".
-    std::string text() const;
 };
 
 /// Thrown when the run stopped on SIGINT or SIGTERM after writing its checkpoint; the CLI exits with

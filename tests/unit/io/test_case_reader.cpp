@@ -20,6 +20,7 @@
 #include "grit/core/types.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/case_spec.hpp"
+#include "support/case_text.hpp"
 #include "grit/io/particle_budget.hpp"
 
 namespace {
@@ -80,13 +81,7 @@ kind = "front"
 axis = "x"
 )";
 
-/// `text` with the first occurrence of `from` replaced by `to`; `from` must occur.
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not in the case text");
-    text.replace(at, from.size(), to);
-    return text;
-}
+using grit::testing::replaced;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

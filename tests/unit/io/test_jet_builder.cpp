@@ -15,6 +15,7 @@
 #include "grit/core/error.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/jet_builder.hpp"
+#include "support/case_text.hpp"
 
 namespace {
 
@@ -45,12 +46,7 @@ max = [6.0e-3, 0.0]
 material = "OFHC_copper"
 )";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    if (at == std::string::npos) throw std::logic_error("test bug: '" + from + "' not in the case text");
-    text.replace(at, from.size(), to);
-    return text;
-}
+using grit::testing::replaced;
 
 fs::path write_case(const std::string& text) {
     static int counter = 0;

@@ -1,0 +1,29 @@
+// What a run will cost, from its first time step, before it runs: shown by `grit check` and at the
+// start of `grit run`, written to run.log.
+#pragma once
+
+#include <string>
+
+#include "grit/io/case_spec.hpp"
+#include "grit/sim/state.hpp"
+
+namespace grit::sim {
+
+struct RunEstimate {
+    double steps = 0.0;            ///< time.end / the first stable step (the step changes during a run)
+    double particles = 0.0;        ///< SPH particles and grains at the start plus what the inlets emit
+    double outputs = 0.0;          ///< output times: time.end / output.interval + 1
+    double snapshot_bytes = 0.0;   ///< all snapshots together [B] (at the largest particle count)
+    double wall_seconds = 0.0;     ///< at `rate` particle-steps per second
+    double rate = 0.0;             ///< the assumed particle-steps per second (threads x per-thread rate)
+    /// One line: "~N steps, ~P particles, O outputs (~S of snapshots), ~T wall at R particle-steps/s".
+    std::string text() const;
+    /// A warning when the run may take more than a day, else empty.
+    std::string warning(const io::CaseSpec& spec) const;
+};
+
+/// The estimate from the primed `state` of a run of `spec` (its clock holds the first stable step).
+template <int Dim>
+RunEstimate estimate_run(const io::CaseSpec& spec, const State<Dim>& state);
+
+}  // namespace grit::sim
