@@ -329,6 +329,11 @@ if [[ $HAVE_VTK -eq 1 ]]; then
     else
         fail "t0: VTK reads the .pvd and its .vtu" "$VTK_OUT"
     fi
+    if [[ $VTK_OUT == *"field data: material_names=[tank_water]; phase_names=[fluid, solid, wall]"* ]]; then
+        pass "t0: snapshots name the materials and phases (field data)"
+    else
+        fail "t0: snapshots name the materials and phases (field data)" "$VTK_OUT"
+    fi
 else
     skip "t0: VTK reads the .pvd and its .vtu" "$VTK_WHY"
 fi

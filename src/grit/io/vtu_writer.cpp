@@ -91,10 +91,34 @@ void write_uint8_fill(std::ostream& out, std::uint8_t value, std::uint64_t n) {
     }
 }
 
+/// The dataset's name lists as VTK field data: String arrays in ascii form, each string written as its
+/// byte values and ended by 0 (the form VTK's own XML writer uses).
+std::string field_data(const PointCloud& cloud) {
+    if (cloud.names.empty()) return {};
+    std::string xml = "    <FieldData>\n";
+    for (const NameList& list : cloud.names) {
+        xml += fmt::format("      <Array type=\"String\" Name=\"{}\" NumberOfTuples=\"{}\" format=\"ascii\">\n       ",
+                           xml_escape(list.name), list.values.size());
+        for (const std::string& value : list.values) {
+            for (const char c : value) xml += fmt::format(" {}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+            xml += " 0";
+        }
+        xml += "\n      </Array>\n";
+    }
+    xml += "    </FieldData>\n";
+    return xml;
+}
+
 void validate(const PointCloud& cloud) {
     if (cloud.points.size() % 3 != 0) {
         throw std::invalid_argument(fmt::format(
             "write_vtu: point coordinate count {} is not a multiple of 3", cloud.points.size()));
+    }
+    for (const NameList& list : cloud.names) {
+        if (list.name.empty()) throw std::invalid_argument("write_vtu: a name list has an empty name");
+        for (const std::string& value : list.values)
+            if (value.find('\0') != std::string::npos)
+                throw std::invalid_argument(fmt::format("write_vtu: name list '{}' holds a NUL character", list.name));
     }
     const std::size_t n = cloud.size();
     for (const PointArray& a : cloud.arrays) {
@@ -189,6 +213,7 @@ void write_vtu(const std::filesystem::path& file, const PointCloud& cloud) {
     xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
            "header_type=\"UInt64\">\n";
     xml += "  <UnstructuredGrid>\n";
+    xml += field_data(cloud);
     xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
     xml += "      <PointData>\n";
     for (std::size_t i = 4; i < blocks.size(); ++i) {

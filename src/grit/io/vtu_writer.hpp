@@ -13,6 +13,7 @@ namespace grit::io {
 /// header_type UInt64) with all data in one raw `<AppendedData>` block. Every point is also
 /// a VTK_VERTEX cell, so ParaView shows the points without a filter. Points are Float64 x 3;
 /// each array is Float64 (or Int32 when `is_integer`) with its `components`. n = 0 is allowed.
+/// The cloud's name lists become String arrays of the grid's field data.
 /// The file is written to a temporary file in the same directory and renamed into place.
 /// Throws std::invalid_argument if an array's size is not n * components (or the point
 /// count is not a multiple of 3), std::runtime_error naming the path on I/O failure.

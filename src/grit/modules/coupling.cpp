@@ -74,7 +74,8 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
     }
 
     // 0 marks a particle the coupling has not seen yet (update_porosity gives it its porosity).
-    state.particles.fields().template add<double>("porosity", 0.0, true);
+    state.particles.fields().template add<double>("porosity", 0.0, true).set_output_scope(
+        [](std::int32_t phase, std::int32_t) { return phase == static_cast<std::int32_t>(Phase::fluid); });
     auto& grain_fields = state.grains->grains().fields();
     grain_fields.template add<core::Vec<Dim>>("fluid_force", core::Vec<Dim>::zero(), true);
     grain_fields.template add<core::Vec<Dim>>("drag_force", core::Vec<Dim>::zero(), true);

@@ -202,7 +202,11 @@ template <int Dim>
 void GrainsModule<Dim>::write_output(const sim::OutputPlace& place) {
     if (place.snapshots) {
         const auto file = fmt::format("grains/{}_grains_{:06}.vtu", place.name, snapshot_index_++);
-        io::write_vtu(place.dir / file, state_.grains->grains().snapshot());
+        io::PointCloud cloud = state_.grains->grains().snapshot();
+        io::NameList names{"material_names", {}};
+        for (const auto& m : setup_.spec.grain_materials) names.values.push_back(m.name);
+        cloud.names.push_back(std::move(names));
+        io::write_vtu(place.dir / file, cloud);
         pvd_->add(state_.clock.time, file);
     }
     state_.impacts.flush();

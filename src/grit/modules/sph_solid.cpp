@@ -1,6 +1,7 @@
 // The solid SPH module: fields, pressure, sums, material update and erosion.
 #include "grit/modules/sph_solid.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "grit/core/disjoint_sets.hpp"
@@ -25,14 +26,24 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     f.add<double>("von_mises", 0.0, true);
     f.add<double>("temperature", 0.0, true);
     f.add<double>("specific_energy", 0.0, false);
-    f.add<double>("bulking_pressure", 0.0, true);
-    f.add<std::int32_t>("fixed", 0, true);  // clamped particles (set by the open-boundaries module)
-
     for (const auto& m : setup.spec.materials) {
         const auto* jh2 = std::get_if<material::JH2>(&m.solid_model);
         brittle_.push_back(jh2 != nullptr);
         rubble_density_.push_back(jh2 ? rubble_dilation * jh2->reference_density : 0.0);
     }
+    // Written only where a JH-2 material can give it a value.
+    const bool any_brittle = std::find(brittle_.begin(), brittle_.end(), true) != brittle_.end();
+    f.add<double>("bulking_pressure", 0.0, any_brittle);
+    f.add<std::int32_t>("fixed", 0, true);  // clamped particles (set by the open-boundaries module)
+
+    // Snapshots show the solid state on solids only, and the bulking pressure (eq. 41) on JH-2 solids only.
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const auto on_solids = [solid](std::int32_t phase, std::int32_t) { return phase == solid; };
+    for (const char* name : {"deviatoric_stress", "plastic_strain", "damage", "von_mises", "temperature"})
+        f.base(name).set_output_scope(on_solids);
+    f.base("bulking_pressure").set_output_scope([solid, brittle = brittle_](std::int32_t phase, std::int32_t m) {
+        return phase == solid && brittle[static_cast<std::size_t>(m)];
+    });
     parameters_.gravity = core::to_vec<Dim>(setup.spec.gravity);
     parameters_.artificial_stress = setup.spec.artificial_stress;
     parameters_.spacing = setup.spacing;

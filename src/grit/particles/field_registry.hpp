@@ -3,7 +3,10 @@
 // per-particle arrays.
 #pragma once
 
+#include <algorithm>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -39,7 +42,17 @@ public:
     virtual void gather(const std::vector<Index>& source) = 0;
     virtual std::unique_ptr<FieldBase> clone() const = 0;
     /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
-    virtual void append_output(io::PointCloud& cloud) const = 0;
+    /// `phase` and `material` (the particles' phases and material indices, or null) apply the output
+    /// scope: a real-valued column is written as NaN on the particles it means nothing for.
+    virtual void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
+                               const std::int32_t* material = nullptr) const = 0;
+
+    /// Where the column means something, as a function of a particle's phase and material index.
+    using Scope = std::function<bool(std::int32_t phase, std::int32_t material)>;
+    /// Limits the column in snapshots to the particles `defined` accepts (unset: every particle). ParaView
+    /// leaves NaN out of colour ranges, so a solid-only field no longer shows the water as 0 K or 0 strain.
+    void set_output_scope(Scope defined) { scope_ = std::move(defined); }
+    bool defined_for(std::int32_t phase, std::int32_t material) const { return !scope_ || scope_(phase, material); }
     /// Writes the column as a dataset named after the field (rows = particles, one column per scalar
     /// component), bit for bit.
     virtual void save(io::Hdf5Group& group) const = 0;
@@ -52,6 +65,7 @@ private:
     std::string name_;
     bool output_;
     bool saved_;
+    Scope scope_;
 };
 
 template <class T>
@@ -74,7 +88,8 @@ public:
         values_.swap(next);
     }
     std::unique_ptr<FieldBase> clone() const override { return std::make_unique<Field<T>>(*this); }
-    void append_output(io::PointCloud& cloud) const override;
+    void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
+                       const std::int32_t* material = nullptr) const override;
     void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group, Index size) override;
     std::vector<unsigned char> bytes() const override {
@@ -94,7 +109,7 @@ private:
 };
 
 template <class T>
-void Field<T>::append_output(io::PointCloud& cloud) const {
+void Field<T>::append_output(io::PointCloud& cloud, const std::int32_t* phase, const std::int32_t* material) const {
     io::PointArray a;
     a.name = name();
     if constexpr (std::is_same_v<T, double>) {
@@ -115,6 +130,13 @@ void Field<T>::append_output(io::PointCloud& cloud) const {
         for (const auto& t : values_) a.real.insert(a.real.end(), {t.xx, t.yy, t.zz, t.xy, t.yz, t.zx});
     } else {
         static_assert(sizeof(T) == 0, "field type has no output form");
+    }
+    if (phase != nullptr && material != nullptr && !a.is_integer) {
+        const auto c = static_cast<std::size_t>(a.components);
+        for (std::size_t i = 0; i < values_.size(); ++i)
+            if (!defined_for(phase[i], material[i]))
+                std::fill_n(a.real.begin() + static_cast<std::ptrdiff_t>(c * i), c,
+                            std::numeric_limits<double>::quiet_NaN());
     }
     cloud.arrays.push_back(std::move(a));
 }
@@ -174,6 +196,13 @@ public:
         return ref;
     }
 
+    /// The field of that name, whatever its type.
+    FieldBase& base(const std::string& name) {
+        auto it = index_.find(name);
+        if (it == index_.end()) throw std::logic_error("no field '" + name + "'");
+        return *fields_[it->second];
+    }
+
     template <class T>
     Field<T>& get(const std::string& name) {
         auto it = index_.find(name);
@@ -205,9 +234,11 @@ public:
         for (auto& f : fields_) f->gather(source);
         size_ = static_cast<Index>(source.size());
     }
-    void append_output(io::PointCloud& cloud) const {
+    /// Every output field into `cloud`; `phase` and `material` as in FieldBase::append_output.
+    void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
+                       const std::int32_t* material = nullptr) const {
         for (const auto& f : fields_)
-            if (f->is_output()) f->append_output(cloud);
+            if (f->is_output()) f->append_output(cloud, phase, material);
     }
     /// Every saved field as a dataset of `group`, and the particle count as its attribute `size`.
     void save(io::Hdf5Group& group) const {

@@ -106,14 +106,15 @@ public:
     const std::int32_t* phase() const noexcept { return phase_->data(); }
     const std::int32_t* material() const noexcept { return material_->data(); }
 
-    /// Points and every output field, ready for a snapshot writer.
+    /// Points and every output field, ready for a snapshot writer; a field is NaN where its output scope
+    /// excludes the particle's phase and material (FieldBase::set_output_scope).
     io::PointCloud snapshot() const {
         io::PointCloud cloud;
         cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
         const Vec* x = position();
         for (Index i = 0; i < size(); ++i)
             for (int k = 0; k < Dim; ++k) cloud.points[3 * static_cast<std::size_t>(i) + k] = x[i][k];
-        fields_.append_output(cloud);
+        fields_.append_output(cloud, phase(), material());
         return cloud;
     }
 

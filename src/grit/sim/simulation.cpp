@@ -54,6 +54,20 @@ const char* phase_name(std::int32_t p) {
     return "unknown";
 }
 
+/// A snapshot of `particles` with the names behind its integer codes: `material_names` (the case's
+/// materials, by the `material` index) and `phase_names` (by the `phase` code).
+template <int Dim>
+io::PointCloud named_snapshot(const particles::SphParticles<Dim>& particles, const io::CaseSpec& spec) {
+    io::PointCloud cloud = particles.snapshot();
+    io::NameList materials{"material_names", {}};
+    for (const auto& m : spec.materials) materials.values.push_back(m.name);
+    io::NameList phases{"phase_names", {}};
+    for (const auto p : {Phase::fluid, Phase::solid, Phase::wall}) phases.values.push_back(phase_name(static_cast<std::int32_t>(p)));
+    cloud.names.push_back(std::move(materials));
+    cloud.names.push_back(std::move(phases));
+    return cloud;
+}
+
 // SIGINT/SIGTERM set this; the run loop checks it after each step and stops with a checkpoint.
 std::atomic<int> pending_signal{0};
 extern "C" void on_stop_signal(int signal) { pending_signal.store(signal); }
@@ -375,7 +389,7 @@ void Simulation<Dim>::check_health() {
     std::string message = fmt::format("numerical blow-up at step {} (t = {:.9g} s): {}", clock.step, clock.time, what);
     if (options_.write_files && has_sph_) {
         const auto file = fmt::format("snapshots/{}_last_good_{:06}.vtu", spec_.name, last_good_step_);
-        io::write_vtu(options_.output_dir / file, last_good_.snapshot());
+        io::write_vtu(options_.output_dir / file, named_snapshot(last_good_, spec_));
         pvd_->add(last_good_time_, file);
         message += fmt::format("; last good state (step {}, t = {:.9g} s) written to {}", last_good_step_,
                                last_good_time_, (options_.output_dir / file).string());
@@ -485,7 +499,7 @@ void Simulation<Dim>::write_output() {
     if (!options_.write_files) return;
     if (spec_.write_snapshots && has_sph_) {
         const auto file = fmt::format("snapshots/{}_{:06}.vtu", spec_.name, snapshot_index_++);
-        io::write_vtu(options_.output_dir / file, state_.particles.snapshot());
+        io::write_vtu(options_.output_dir / file, named_snapshot(state_.particles, spec_));
         pvd_->add(state_.clock.time, file);
     }
     for (auto& m : modules_) m->write_output(place_);
@@ -727,7 +741,7 @@ RunSummary Simulation<Dim>::run() {
                     write_checkpoint();
                     if (has_sph_) {
                         const auto file = fmt::format("snapshots/{}_interrupted_{:06}.vtu", spec_.name, c.step);
-                        io::write_vtu(options_.output_dir / file, state_.particles.snapshot());
+                        io::write_vtu(options_.output_dir / file, named_snapshot(state_.particles, spec_));
                         message += "; state written to " + (options_.output_dir / file).string();
                     }
                     message += "; continue with --restart " + options_.output_dir.string();

@@ -6,7 +6,8 @@
   /usr/bin/python3 check_vtu_with_vtk.py --pvd FILE.pvd [required_array ...]
 
 Needs python3-vtk9 (Debian), hence /usr/bin/python3 rather than another python3 on PATH.
-Prints "N points, arrays: a, b, ..." (per dataset in --pvd mode) and exits 0; on any
+Prints "N points, arrays: a, b, ...[; field data: name=[v, ...]]" (per dataset in --pvd mode)
+and exits 0; on any
 problem prints a message starting with "error:" to stderr and exits 1 (2 for bad usage).
 In --pvd mode the .pvd is parsed with xml.etree and each referenced .vtu (relative to the
 .pvd's directory) is checked like a single file, with the same required arrays.
@@ -119,7 +120,15 @@ def check_vtu(path, required):
         raise CheckError(f"{path}: missing required array(s) {', '.join(missing)}; "
                          f"present: {', '.join(names) or '(none)'}")
 
-    return f"{n_points} points, arrays: {', '.join(names) if names else '(none)'}"
+    fd = grid.GetFieldData()
+    lists = []
+    for i in range(fd.GetNumberOfArrays()):
+        a = fd.GetAbstractArray(i)
+        values = [str(a.GetValue(k)) for k in range(a.GetNumberOfValues())]
+        lists.append(f"{a.GetName()}=[{', '.join(values)}]")
+
+    line = f"{n_points} points, arrays: {', '.join(names) if names else '(none)'}"
+    return line + (f"; field data: {'; '.join(lists)}" if lists else "")
 
 
 def check_pvd(path, required):

@@ -396,3 +396,25 @@ TEST_F(IoWriterTest, SeriesIoFailureNamesPath) {
 }
 
 }  // namespace
+
+// Name lists become String arrays of the grid's field data, in VTK's ascii form: each string's bytes,
+// then 0 (the VTK reader's side of this is checked by tests/unit/io/check_vtu_with_vtk.py in the CLI test).
+TEST_F(IoWriterTest, VtuNameListsAreFieldDataStrings) {
+    PointCloud c = sample_cloud();
+    c.names.push_back({"material_names", {"water", "a&b"}});
+    const fs::path file = dir_ / "frame.vtu";
+    grit::io::write_vtu(file, c);
+    const std::string text = read_all(file);
+    const auto fd = text.find("<FieldData>");
+    ASSERT_NE(fd, std::string::npos);
+    EXPECT_LT(fd, text.find("<Piece"));
+    EXPECT_NE(text.find("<Array type=\"String\" Name=\"material_names\" NumberOfTuples=\"2\" format=\"ascii\">\n"
+                        "        119 97 116 101 114 0 97 38 98 0\n"),
+              std::string::npos)
+        << text.substr(0, 600);
+    const ParsedVtu v(text);  // the appended block is unchanged
+    expect_same_bits(v.values<double>("density"), c.arrays[0].real, "density");
+
+    c.names.push_back({"bad", {std::string("a\0b", 3)}});
+    EXPECT_THROW(grit::io::write_vtu(file, c), std::invalid_argument);
+}
