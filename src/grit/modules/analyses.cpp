@@ -1,12 +1,14 @@
-// Crater, cracks and probes: output values at output times.
+// Crater, cracks, fluid in solids and probes: output values at output times.
 #include "grit/modules/analyses.hpp"
 
 #include <fmt/format.h>
 
 #include <fstream>
+#include <variant>
 
 #include "grit/analysis/cracks.hpp"
 #include "grit/analysis/crater.hpp"
+#include "grit/analysis/fluid_in_solid.hpp"
 #include "grit/analysis/probes.hpp"
 
 namespace grit::modules {
@@ -52,6 +54,13 @@ void CracksModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
 }
 
 template <int Dim>
+void FluidInSolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    const double reach = std::visit([](const auto& k) { return k.support(); }, setup_.kernel);
+    const auto n = analysis::count_fluid_in_solids(state_.particles, reach, setup_.periodic_box);
+    out.push_back(sim::OutputValue::count("fluid_in_solid", static_cast<double>(n)));
+}
+
+template <int Dim>
 double ProbesModule<Dim>::value(std::size_t k) const {
     return analysis::evaluate_probe(setup_.spec.probes[k], state_.particles, setup_.kernel, setup_.spacing,
                                     setup_.periodic_box);
@@ -67,6 +76,8 @@ template class CraterModule<2>;
 template class CraterModule<3>;
 template class CracksModule<2>;
 template class CracksModule<3>;
+template class FluidInSolidModule<2>;
+template class FluidInSolidModule<3>;
 template class ProbesModule<2>;
 template class ProbesModule<3>;
 

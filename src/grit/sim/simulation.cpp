@@ -206,6 +206,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         modules_.push_back(std::make_unique<modules::SolidModule<Dim>>(state_, setup_, *sph));
         if (spec_.has_crater) modules_.push_back(std::make_unique<modules::CraterModule<Dim>>(state_, setup_));
         if (spec_.has_cracks) modules_.push_back(std::make_unique<modules::CracksModule<Dim>>(state_, setup_));
+        if (has_fluid(spec_)) modules_.push_back(std::make_unique<modules::FluidInSolidModule<Dim>>(state_, setup_));
     }
     if (has_sph_) modules_.push_back(std::make_unique<modules::OpenBoundariesModule<Dim>>(state_, setup_));
 
