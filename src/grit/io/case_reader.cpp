@@ -509,7 +509,8 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
             if (shape.max[k] <= shape.min[k])
                 s.fail("max", fmt::format("must exceed min in {} ({} <= {})", axis[k], shape.max[k], shape.min[k]));
             if (shape.kind == "box" && shape.max[k] - shape.min[k] < dx)
-                s.fail("max", fmt::format("the box is {} m wide in {}, less than numerics.particle_spacing = {} m",
+                s.fail("max", fmt::format("the box is {} m wide in {}, less than numerics.particle_spacing = {} m "
+                                          "(lengths are in metres: 0.1 mm is 1e-4)",
                                           shape.max[k] - shape.min[k], axis[k], dx));
         }
         if (shape.kind == "tank") {
@@ -812,7 +813,9 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (n2 <= 0.0) s.fail("direction", "must not be the zero vector");
         for (double& v : in.direction) v /= std::sqrt(n2);
         in.diameter = s.number("diameter", positive("[m]"));
-        if (in.diameter < dx) s.fail("diameter", fmt::format("is less than numerics.particle_spacing = {} m", dx));
+        if (in.diameter < dx)
+            s.fail("diameter", fmt::format("is less than numerics.particle_spacing = {} m (lengths are in metres: "
+                                           "0.1 mm is 1e-4)", dx));
         in.velocity = s.number("velocity", positive("[m/s]"));
         in.material = table.resolve(s, "material", s.text_or("material", "water"));
         in.start = s.number_or("start", 0.0, non_negative("[s]"));
@@ -1001,7 +1004,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
         throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]], [jet] or [[grains]]");
     report_unknown(root, "", keys);
-    // Last, once everything else is valid: refuse a case too big to allocate.
+    // Last, once everything else is valid: refuse a case its spacing cannot resolve, or too big to allocate.
+    check_resolution(c);
     check_particle_budget(c);
     return c;
 }

@@ -132,7 +132,8 @@ void build_jet(CaseSpec& c) {
                          "jet.target",
                          point_text(nozzle), "xyz"[V], lowest, "xyz"[V], surface));
     if (j.diameter < dx)
-        fail("jet.diameter", j.diameter, fmt::format("is less than numerics.particle_spacing = {} m", dx));
+        fail("jet.diameter", j.diameter,
+             fmt::format("is less than numerics.particle_spacing = {} m (lengths are in metres: 0.1 mm is 1e-4)", dx));
 
     InletSpec in;
     in.key = "jet";

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -139,6 +140,38 @@ void check_particle_budget(const CaseSpec& c) {
     const std::string grains = e.sph > 0.0 && e.grains > 0.0 ? fmt::format(" ({:.1e} of them grains)", e.grains) : "";
     throw core::InputError(fmt::format("{} would make about {:.1e} {}{} (~{:.1e} bytes); {}", cause, e.total(),
                                        e.sph > 0.0 ? "particles" : "grains", grains, e.bytes, limit));
+}
+
+namespace {
+
+/// The smallest size of a block's shape [m]: a box's thinnest side, a disc's or sphere's diameter, the
+/// lesser of a cylinder's diameter and length. A tank's walls are `layers` spacings thick by
+/// construction, so it has no size to compare (0).
+double thinnest(const ShapeSpec& shape, int dim) {
+    if (shape.kind == "box") {
+        double t = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < static_cast<std::size_t>(dim); ++k) t = std::min(t, shape.max[k] - shape.min[k]);
+        return t;
+    }
+    if (shape.kind == "disc") return 2.0 * shape.radius;
+    if (shape.kind == "cylinder") return std::min(2.0 * shape.radius, shape.length);
+    return 0.0;
+}
+
+}  // namespace
+
+void check_resolution(const CaseSpec& c) {
+    const double dx = c.particle_spacing;
+    for (const auto* blocks : {&c.fluids, &c.solids}) {
+        for (const auto& b : *blocks) {
+            const double size = thinnest(b.shape, c.dimension);
+            if (size <= 0.0 || size >= min_particles_across * dx) continue;
+            throw core::InputError(fmt::format(
+                "key 'numerics.particle_spacing' = {} m: {} ({}) is {:.3g} m across at its thinnest, {:.2g} particles; "
+                "a body needs at least {} (lengths are in metres: 0.1 mm is 1e-4)",
+                dx, b.key, b.shape.kind, size, size / dx, min_particles_across));
+        }
+    }
 }
 
 }  // namespace grit::io

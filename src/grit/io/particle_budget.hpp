@@ -27,4 +27,13 @@ ParticleEstimate estimate_particles(const CaseSpec& c);
 /// and numerics.max_particles when the estimate exceeds c.max_particles.
 void check_particle_budget(const CaseSpec& c);
 
+/// Fewest particles across a fluid or solid body (its thinnest side) that the SPH sums can resolve: the
+/// kernel's support is 2.5 spacings, so a thinner body has no particle with a full neighbourhood.
+inline constexpr double min_particles_across = 3.0;
+
+/// Throws core::InputError naming numerics.particle_spacing, the block and the unit when a fluid or
+/// solid block is fewer than min_particles_across spacings across: most often a spacing, or a block,
+/// given in millimetres.
+void check_resolution(const CaseSpec& c);
+
 }  // namespace grit::io

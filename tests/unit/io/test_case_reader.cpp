@@ -695,6 +695,15 @@ TEST_F(CaseReaderTest, TinySpacingIsRefusedNamingTheKeysAndTheCount) {
                  {"numerics.particle_spacing = 1e-320 m", "more particles than a double can count", "numerics.max_particles"});
 }
 
+// Issue 16: a spacing in millimetres (0.05 for 0.05 mm) leaves a body a few particles across; the error
+// names the key, the body and the unit. Three particles across still pass.
+TEST_F(CaseReaderTest, BodyFewerThanThreeParticlesAcrossIsRefusedNamingTheUnit) {
+    expect_error(minimal_2d, {"numerics.particle_spacing=0.05"},
+                 {"key 'numerics.particle_spacing' = 0.05 m", "fluid[0] (box) is 0.125 m across at its thinnest",
+                  "2.5 particles", "at least 3", "lengths are in metres"});
+    EXPECT_NO_THROW(read_ok(minimal_2d, {"numerics.particle_spacing=0.041666"}));
+}
+
 TEST_F(CaseReaderTest, MaxParticlesBelowTheCountIsRefused) {
     expect_error(minimal_2d, {"numerics.max_particles=263"},
                  {"numerics.particle_spacing = 0.015625 m", "about 2.6e+02 particles", "numerics.max_particles = 263"});
