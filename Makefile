@@ -4,7 +4,9 @@ SANITIZE_BUILD ?= build-sanitize
 JOBS ?= $(shell nproc)
 CTEST_ARGS ?=
 
-.PHONY: all deps configure build test test-sanitize demo bench clean
+PREFIX ?= /usr/local
+
+.PHONY: all deps configure build test test-sanitize demo bench install clean
 
 all: build
 
@@ -36,6 +38,10 @@ demo: build
 
 bench: build
 	./$(BUILD)/grit_bench --benchmark_counters_tabular=true
+
+# The binary, scripts, cases and docs under $(PREFIX) (make install PREFIX=$$HOME/.local for a user install).
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD) $(SANITIZE_BUILD) output

@@ -76,9 +76,16 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
 int plot_command(const std::string& folder) {
     if (!std::filesystem::is_directory(folder))
         throw grit::core::InputError(fmt::format("plot {}: no such folder", folder));
-    const std::filesystem::path script = std::filesystem::path(GRIT_SCRIPTS_DIR) / "grit_plot.py";
+    // An installed grit finds its scripts beside it (PREFIX/bin/grit, PREFIX/share/grit/scripts), a built
+    // one in its source tree.
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const std::filesystem::path installed = exe.parent_path().parent_path() / GRIT_INSTALLED_SCRIPTS_DIR / "grit_plot.py";
+    const std::filesystem::path script =
+        !ec && std::filesystem::exists(installed) ? installed : std::filesystem::path(GRIT_SCRIPTS_DIR) / "grit_plot.py";
     if (!std::filesystem::exists(script))
-        throw grit::core::InputError(fmt::format("plot: {} is missing (grit plot runs from its source tree)", script.string()));
+        throw grit::core::InputError(fmt::format("plot: {} is missing (reinstall grit, or run it from its build tree)",
+                                                 script.string()));
     const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
     std::vector<std::string> args = {python, script.string(), folder};
     std::vector<char*> argv;
