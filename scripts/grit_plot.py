@@ -1,30 +1,91 @@
 #!/usr/bin/python3
 """Plots of a grit run or sweep folder, as PNG files in FOLDER/plots/ (what `grit plot FOLDER` runs).
 
-A run folder: the crater profile at several output times on one axis (2D cases with a crater
-analysis; from the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
+A run folder: a picture of the last output (2D: water, solids coloured by plastic strain, grains to
+scale), the crater profile at several output times on one axis (2D cases with a crater analysis; from
+the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
 and histograms of the impact speeds and angles (impacts.csv). A sweep folder (sweep.csv): C_d, C_w and
 eroded mass against each swept parameter.
 
 usage: scripts/grit_plot.py FOLDER [--profiles N]
-Uses Debian's python3-numpy and python3-matplotlib.
+Uses Debian's python3-numpy and python3-matplotlib; run from another Python that lacks them, it runs
+itself again with /usr/bin/python3.
 """
 import argparse
 import json
+import os
 import pathlib
 import sys
 import xml.etree.ElementTree as ET
 
-import matplotlib
+try:
+    import matplotlib
+    import numpy as np
+except ImportError as missing:
+    debian = "/usr/bin/python3"
+    if os.path.exists(debian) and os.path.realpath(sys.executable) != os.path.realpath(debian):
+        os.execv(debian, [debian, *sys.argv])
+    sys.exit(f"error: {missing}; install Debian's python3-numpy and python3-matplotlib")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from matplotlib.collections import PatchCollection  # noqa: E402
+from matplotlib.patches import Circle  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grit_vtu import read_vtu  # noqa: E402
 
-SOLID = 1  # grit's phase code of SPH solid particles (fluid 0, solid 1, wall 2)
+FLUID, SOLID, WALL = 0, 1, 2  # grit's phase codes of SPH particles
+
+
+def last_snapshot(pvd):
+    """(time, path) of the last dataset of a .pvd that exists, or None."""
+    if not pvd.exists():
+        return None
+    entries = [(float(e.get("timestep")), pvd.parent / e.get("file")) for e in ET.parse(pvd).getroot().iter("DataSet")]
+    entries = [e for e in entries if e[1].exists()]
+    return entries[-1] if entries else None
+
+
+def snapshot_picture(folder, summary, plots):
+    """The last output of a 2D run as ParaView would show it: water blue, walls grey, solids coloured by
+    plastic strain, grains as discs of their radius."""
+    if summary.get("dimension") != 2:
+        return
+    last = last_snapshot(folder / (summary["case"] + ".pvd"))
+    if last is None:
+        return
+    time, path = last
+    v = read_vtu(path)
+    x, phase = v["Points"], v["phase"]
+    dx = summary["particle_spacing"]
+    fig, ax = plt.subplots(figsize=(8, 4.4))
+    lo, hi = x[:, :2].min(axis=0) - dx, x[:, :2].max(axis=0) + dx
+    grains = last_snapshot(folder / (summary["case"] + "_grains.pvd"))
+    g = read_vtu(grains[1]) if grains else None
+    ax.set_xlim(lo[0] * 1e3, hi[0] * 1e3)
+    ax.set_ylim(lo[1] * 1e3, hi[1] * 1e3)
+    ax.set_aspect("equal")
+    fig.canvas.draw()
+    # A marker one spacing wide: the axes' width in points over its width in mm.
+    bbox = ax.get_window_extent().transformed(fig.dpi_scale_trans.inverted())
+    size = (bbox.width * 72.0 / ((hi[0] - lo[0]) * 1e3) * dx * 1e3) ** 2
+    for code, colour in ((WALL, "0.6"), (FLUID, "#4a90d9")):
+        sel = phase == code
+        ax.scatter(x[sel, 0] * 1e3, x[sel, 1] * 1e3, s=size, marker="s", c=colour, linewidths=0)
+    solid = phase == SOLID
+    if solid.any():
+        strain = v["plastic_strain"][solid] if "plastic_strain" in v else np.zeros(int(solid.sum()))
+        art = ax.scatter(x[solid, 0] * 1e3, x[solid, 1] * 1e3, s=size, marker="s", c=strain, cmap="inferno",
+                         vmin=0.0, linewidths=0)
+        fig.colorbar(art, ax=ax, label="plastic strain [-]", shrink=0.8)
+    if g is not None and len(g["Points"]):
+        discs = [Circle((p[0] * 1e3, p[1] * 1e3), r * 1e3) for p, r in zip(g["Points"], g["radius"])]
+        ax.add_collection(PatchCollection(discs, facecolor="#2e8b57", edgecolor="k", linewidth=0.4))
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(f"{summary.get('case', '')} at t = {time * 1e6:.4g} us (grains green)")
+    save(fig, plots / "snapshot.png")
 
 
 def read_csv(path):
@@ -109,6 +170,7 @@ def run_plots(folder, plots, profiles):
             axes[1].set_xlabel("impact angle [deg] (90: normal)")
             save(fig, plots / "impacts.png")
     if summary:
+        snapshot_picture(folder, summary, plots)
         crater_profiles(folder, summary, plots, profiles)
 
 

@@ -1,42 +1,157 @@
 #!/usr/bin/python3
-"""Plot columns of a grit series.csv against time, to a PNG.
+"""Plots of a grit run's CSV files, to PNG, with units.
 
-usage: scripts/plot_series.py output/CASE/series.csv COLUMN [COLUMN ...] [-o plot.png]
-Uses Debian's python3-numpy and python3-matplotlib.
+usage:
+  scripts/plot_series.py OUT/series.csv COLUMN [COLUMN ...] [-o plot.png]
+      columns of series.csv against time (time in s, ms or us, lengths in mm, pressures in MPa ...)
+  scripts/plot_series.py OUT/crater.csv [-o plot.png]
+      the crater profile of the last output: the solid's top surface against x, in mm
+  scripts/plot_series.py OUT/series.csv --dambreak [--column-width 0.2] [--reference CSV] [-o plot.png]
+      the dam break's surge front in Martin & Moyce's axes, Z = front / a against T = t sqrt(2 g / a),
+      with their measurements (cases/dambreak_2d/reference/martin_moyce_1952.csv)
+
+Uses Debian's python3-numpy and python3-matplotlib; run from another Python that lacks them, it runs
+itself again with /usr/bin/python3.
 """
 import argparse
+import os
+import pathlib
 import sys
 
-import matplotlib
+try:
+    import matplotlib
+    import numpy as np
+except ImportError as missing:
+    debian = "/usr/bin/python3"
+    if os.path.exists(debian) and os.path.realpath(sys.executable) != os.path.realpath(debian):
+        os.execv(debian, [debian, *sys.argv])
+    sys.exit(f"error: {missing}; install Debian's python3-numpy and python3-matplotlib")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+MARTIN_MOYCE = ROOT / "cases" / "dambreak_2d" / "reference" / "martin_moyce_1952.csv"
+
+# Column -> (label, unit, scale from SI). Columns not listed are plotted as written (SI units).
+UNITS = {
+    "crater_depth": ("crater depth C_d", "mm", 1e3),
+    "crater_width": ("crater width C_w", "mm", 1e3),
+    "front": ("front", "m", 1.0),
+    "height": ("height", "m", 1.0),
+    "dt": ("time step", "ns", 1e9),
+    "max_velocity": ("largest speed", "m/s", 1.0),
+    "kinetic_energy": ("kinetic energy", "J (per m in 2D)", 1.0),
+    "internal_energy": ("internal energy", "J (per m in 2D)", 1.0),
+    "mass_total": ("mass", "kg (per m in 2D)", 1.0),
+    "mass_in": ("mass in", "kg (per m in 2D)", 1.0),
+    "mass_out": ("mass out", "kg (per m in 2D)", 1.0),
+    "eroded_mass": ("eroded mass", "g (per m in 2D)", 1e3),
+    "max_plastic_strain": ("largest plastic strain", "-", 1.0),
+    "damaged_area": ("damaged area", "mm^2 (mm^3 in 3D)", 1e6),
+    "crack_count": ("cracks", "-", 1.0),
+    "p_stagnation": ("stagnation pressure", "MPa", 1e-6),
+    "grain_kinetic_energy": ("grain kinetic energy", "J (per m in 2D)", 1.0),
+    "fluid_in_solid": ("fluid particles inside solids", "-", 1.0),
+}
+
+
+def time_axis(t):
+    """Scale and unit for a time axis that ends at max(t)."""
+    end = float(np.nanmax(t)) if len(t) else 1.0
+    if end < 1e-3:
+        return 1e6, "us"
+    if end < 1.0:
+        return 1e3, "ms"
+    return 1.0, "s"
+
+
+def read(path):
+    data = np.genfromtxt(path, delimiter=",", names=True)
+    return np.atleast_1d(data)
+
+
+def plot_columns(data, path, columns, out):
+    missing = [c for c in columns if c not in data.dtype.names]
+    if missing:
+        print(f"error: no column {', '.join(missing)} in {path} (has {', '.join(data.dtype.names)})", file=sys.stderr)
+        return 2
+    scale_t, unit_t = time_axis(data["time"])
+    fig, axes = plt.subplots(len(columns), 1, sharex=True, figsize=(7, 2.4 * len(columns)), squeeze=False)
+    for ax, column in zip(axes[:, 0], columns):
+        label, unit, scale = UNITS.get(column, (column, "SI", 1.0))
+        ax.plot(data["time"] * scale_t, data[column] * scale)
+        ax.set_ylabel(f"{label} [{unit}]")
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel(f"time [{unit_t}]")
+    save(fig, out or str(path).rsplit(".", 1)[0] + "_" + "_".join(columns) + ".png")
+    return 0
+
+
+def plot_crater(data, path, out):
+    fig, ax = plt.subplots(figsize=(7, 3.2))
+    time = data["time"][0] if len(data) else float("nan")
+    scale_t, unit_t = time_axis(np.array([time]))
+    ax.plot(data["x"] * 1e3, data["surface"] * 1e3, drawstyle="steps-mid", label=f"t = {time * scale_t:.4g} {unit_t}")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("surface height [mm]")
+    ax.set_title("crater profile (top of the solid; gaps: no solid left)")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out or str(path).rsplit(".", 1)[0] + "_profile.png")
+    return 0
+
+
+def plot_dambreak(data, path, width, gravity, reference, out):
+    if "front" not in data.dtype.names:
+        print(f"error: {path} has no 'front' column (the dam break case's probe)", file=sys.stderr)
+        return 2
+    T = data["time"] * np.sqrt(2.0 * gravity / width)
+    Z = data["front"] / width
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(T, Z, label="grit")
+    if reference.exists():
+        lines = [line for line in reference.read_text().splitlines() if line and not line.startswith("#")]
+        ref = np.genfromtxt(lines, delimiter=",", names=True)
+        ax.plot(ref["T"], ref["Z"], "o", mfc="none", label="Martin & Moyce (1952)")
+    else:
+        print(f"warning: no reference {reference}", file=sys.stderr)
+    ax.set_xlabel("T = t sqrt(2 g / a)")
+    ax.set_ylabel("Z = front / a")
+    ax.set_title(f"dam break surge front, a = {width:g} m")
+    ax.grid(True, alpha=0.3)
+    ax.legend()
+    save(fig, out or str(path).rsplit(".", 1)[0] + "_dambreak_front.png")
+    return 0
+
+
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print(path)
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("series")
-    parser.add_argument("columns", nargs="+")
-    parser.add_argument("-o", "--output", default=None, help="PNG file (default: next to the series)")
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0], usage=__doc__.split("\n\n")[1])
+    parser.add_argument("csv", help="series.csv or crater.csv of a run")
+    parser.add_argument("columns", nargs="*", help="series.csv columns to plot against time")
+    parser.add_argument("-o", "--output", default=None, help="PNG file (default: next to the CSV)")
+    parser.add_argument("--dambreak", action="store_true", help="the surge front in Martin & Moyce's Z-T axes")
+    parser.add_argument("--column-width", type=float, default=0.2, help="the dam break column's width a [m]")
+    parser.add_argument("--gravity", type=float, default=9.81, help="g [m/s^2]")
+    parser.add_argument("--reference", type=pathlib.Path, default=MARTIN_MOYCE, help="Martin & Moyce's T,Z data")
     args = parser.parse_args()
-    data = np.genfromtxt(args.series, delimiter=",", names=True)
-    missing = [c for c in args.columns if c not in data.dtype.names]
-    if missing:
-        print(f"error: no column {', '.join(missing)} in {args.series} (has {', '.join(data.dtype.names)})",
-              file=sys.stderr)
+    data = read(args.csv)
+    names = data.dtype.names or ()
+    if args.dambreak:
+        return plot_dambreak(data, args.csv, args.column_width, args.gravity, args.reference, args.output)
+    if {"x", "surface"} <= set(names):
+        return plot_crater(data, args.csv, args.output)
+    if not args.columns:
+        print(f"error: name the columns to plot (has {', '.join(names)})", file=sys.stderr)
         return 2
-    fig, axes = plt.subplots(len(args.columns), 1, sharex=True, figsize=(7, 2.4 * len(args.columns)), squeeze=False)
-    for ax, column in zip(axes[:, 0], args.columns):
-        ax.plot(data["time"], data[column])
-        ax.set_ylabel(column)
-        ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel("time [s]")
-    out = args.output or args.series.rsplit(".", 1)[0] + "_" + "_".join(args.columns) + ".png"
-    fig.tight_layout()
-    fig.savefig(out, dpi=120)
-    print(out)
-    return 0
+    return plot_columns(data, args.csv, args.columns, args.output)
 
 
 if __name__ == "__main__":
