@@ -13,26 +13,22 @@ itself again with /usr/bin/python3.
 """
 import argparse
 import json
-import os
 import pathlib
 import sys
 import xml.etree.ElementTree as ET
 
-try:
-    import matplotlib
-    import numpy as np
-except ImportError as missing:
-    debian = "/usr/bin/python3"
-    if os.path.exists(debian) and os.path.realpath(sys.executable) != os.path.realpath(debian):
-        os.execv(debian, [debian, *sys.argv])
-    sys.exit(f"error: {missing}; install Debian's python3-numpy and python3-matplotlib")
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from debian_python import require_numpy_and_matplotlib  # noqa: E402
+
+require_numpy_and_matplotlib()
+import matplotlib  # noqa: E402
+import numpy as np  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PatchCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from grit_vtu import read_vtu  # noqa: E402
 
 FLUID, SOLID, WALL = 0, 1, 2  # grit's phase codes of SPH particles

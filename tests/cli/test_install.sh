@@ -11,7 +11,7 @@ check() { if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; failed=1; fi
 
 cmake --install "$BUILD" --prefix "$P" >"$P/install.log" 2>&1 || { cat "$P/install.log"; echo "FAIL: cmake --install"; exit 1; }
 check "bin/grit is installed and runs" '[[ $("$P/bin/grit" --version) == "grit "* ]]'
-for f in share/grit/scripts/grit_plot.py share/grit/scripts/grit_vtu.py share/grit/scripts/plot_series.py \
+for f in share/grit/scripts/grit_plot.py share/grit/scripts/grit_vtu.py share/grit/scripts/debian_python.py share/grit/scripts/plot_series.py \
          share/grit/scripts/paraview_view.py share/grit/cases/demo.toml share/grit/cases/dambreak_2d/case.toml \
          share/doc/grit/README.md share/doc/grit/LICENSE share/doc/grit/CITATION.cff share/doc/grit/theory.md; do
     check "$f" '[[ -f $P/$f ]]'
