@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test test-sanitize demo bench install clean
+.PHONY: all deps configure build test test-sanitize demo bench bench-awj install clean
 
 all: build
 
@@ -36,8 +36,13 @@ demo: build
 	./$(BUILD)/grit run cases/demo.toml --out output/demo
 	./$(BUILD)/grit plot output/demo
 
+# The fluid throughput (dam breaks) and the time to crater (the paper's AWJ on copper, projected to 30 ms).
 bench: build
 	./$(BUILD)/grit_bench --benchmark_counters_tabular=true
+	./$(BUILD)/grit_bench_awj --benchmark_counters_tabular=true
+
+bench-awj: build
+	./$(BUILD)/grit_bench_awj --benchmark_counters_tabular=true
 
 # The binary, scripts, cases and docs under $(PREFIX) (make install PREFIX=$$HOME/.local for a user install).
 install: build
