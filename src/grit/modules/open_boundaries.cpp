@@ -85,7 +85,7 @@ void OpenBoundariesModule<Dim>::apply() {
                 else
                     state_.ledger.out += m[i];
             }
-            ps.gather(keep);
+            ps.remove(keep);
         }
     }
     for (auto& inlet : inlets_) state_.ledger.in += inlet.emit(ps, state_.clock.time, state_.clock.dt);

@@ -221,7 +221,7 @@ void SolidModule<Dim>::remove_failed() {
         else
             keep.push_back(i);
     }
-    ps.gather(keep);
+    ps.remove(keep);
 }
 
 template <int Dim>

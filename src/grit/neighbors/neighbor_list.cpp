@@ -2,6 +2,7 @@
 #include "grit/neighbors/neighbor_list.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "grit/parallel/parallel.hpp"
 
@@ -72,24 +73,70 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
 template <int Dim>
 void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x,
                               Index n, double radius, const std::int32_t* phase, const PeriodicBox<Dim>& box) {
+    // One scan: each thread lists its contiguous chunk of particles into its own buffer, and the buffers
+    // are joined in chunk order (a count pass and a fill pass scanned every cell twice).
     const double r2 = radius * radius;
     offsets_.assign(static_cast<std::size_t>(n) + 1, 0);
+    chunk_entries_.resize(static_cast<std::size_t>(std::max(parallel::max_threads(), 1)));
+    for (auto& found : chunk_entries_) found.clear();  // a chunk no thread runs this time adds nothing
+    std::vector<Index> chunk_begin(chunk_entries_.size() + 1, n);
     with_image(box, [&](const auto& image) {
-        parallel::for_each(n, [&](Index i) {
-            Index count = 0;
-            scan(grid, cell_start, x, i, r2, phase, image, [&](Index) { ++count; });
-            offsets_[static_cast<std::size_t>(i) + 1] = count;
-        });
-        for (Index i = 0; i < n; ++i)
-            offsets_[static_cast<std::size_t>(i) + 1] += offsets_[static_cast<std::size_t>(i)];
-        indices_.resize(static_cast<std::size_t>(offsets_.back()));
-        parallel::for_each(n, [&](Index i) {
-            Index k = offsets_[static_cast<std::size_t>(i)];
-            scan(grid, cell_start, x, i, r2, phase, image,
-                 [&](Index j) { indices_[static_cast<std::size_t>(k++)] = j; });
+        parallel::for_each_chunk(n, [&](int chunk, Index begin, Index end) {
+            auto& found = chunk_entries_[static_cast<std::size_t>(chunk)];
+            chunk_begin[static_cast<std::size_t>(chunk)] = begin;
+            for (Index i = begin; i < end; ++i) {
+                const auto before = found.size();
+                scan(grid, cell_start, x, i, r2, phase, image, [&](Index j) { found.push_back(j); });
+                offsets_[static_cast<std::size_t>(i) + 1] = static_cast<Index>(found.size() - before);
+            }
         });
     });
+    for (Index i = 0; i < n; ++i) offsets_[static_cast<std::size_t>(i) + 1] += offsets_[static_cast<std::size_t>(i)];
+    indices_.resize(static_cast<std::size_t>(offsets_.back()));
+    for (std::size_t c = 0; c < chunk_entries_.size(); ++c) {
+        const auto& found = chunk_entries_[c];
+        if (found.empty()) continue;
+        std::copy(found.begin(), found.end(),
+                  indices_.begin() + offsets_[static_cast<std::size_t>(chunk_begin[c])]);
+    }
     reference_positions_.assign(x, x + n);
+}
+
+template <int Dim>
+void NeighborList<Dim>::compact(const std::vector<Index>& keep) {
+    const auto n = static_cast<Index>(keep.size());
+    std::vector<Index> renumber(static_cast<std::size_t>(particle_count()), -1);
+    for (Index i = 0; i < n; ++i) renumber[static_cast<std::size_t>(keep[static_cast<std::size_t>(i)])] = i;
+    std::vector<Index> offsets(static_cast<std::size_t>(n) + 1, 0);
+    parallel::for_each(n, [&](Index i) {
+        const Index a = keep[static_cast<std::size_t>(i)];
+        Index count = 0;
+        for (Index k = begin(a); k < end(a); ++k) count += renumber[static_cast<std::size_t>(indices_[static_cast<std::size_t>(k)])] >= 0;
+        offsets[static_cast<std::size_t>(i) + 1] = count;
+    });
+    for (Index i = 0; i < n; ++i) offsets[static_cast<std::size_t>(i) + 1] += offsets[static_cast<std::size_t>(i)];
+    std::vector<Index> indices(static_cast<std::size_t>(offsets.back()));
+    std::vector<Vec> reference(static_cast<std::size_t>(n));
+    parallel::for_each(n, [&](Index i) {
+        const Index a = keep[static_cast<std::size_t>(i)];
+        Index out = offsets[static_cast<std::size_t>(i)];
+        for (Index k = begin(a); k < end(a); ++k) {
+            const Index j = renumber[static_cast<std::size_t>(indices_[static_cast<std::size_t>(k)])];
+            if (j >= 0) indices[static_cast<std::size_t>(out++)] = j;
+        }
+        reference[static_cast<std::size_t>(i)] = reference_positions_[static_cast<std::size_t>(a)];
+    });
+    offsets_ = std::move(offsets);
+    indices_ = std::move(indices);
+    reference_positions_ = std::move(reference);
+}
+
+template <int Dim>
+void NeighborList<Dim>::assign(std::vector<Index> offsets, std::vector<Index> indices,
+                               std::vector<Vec> reference_positions) {
+    offsets_ = std::move(offsets);
+    indices_ = std::move(indices);
+    reference_positions_ = std::move(reference_positions);
 }
 
 template <int Dim>

@@ -5,7 +5,9 @@
 // displacements are measured to the nearest image.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "grit/io/hdf5_file.hpp"
@@ -27,9 +29,18 @@ public:
     /// the particles are sorted by cell (every field) and the lists rebuilt. Returns true if rebuilt.
     /// With periodic axes in `box`, a rebuild first wraps every position into the box (particles an
     /// inlet placed across a face).
+    /// Lists of a set that has only lost particles since the build are compacted, not rebuilt: at an
+    /// outlet that removes a particle every few steps, rebuilds (and re-sorts) were most of the builds.
     bool update(particles::SphParticles<Dim>& particles, double radius, double skin, bool force,
                 const PeriodicBox<Dim>& box = {}) {
         const Index n = particles.size();
+        if (!force && built_() && !valid_for(particles)) {
+            if (const auto* keep = particles.kept_since(built_generation_)) {
+                list_.compact(*keep);
+                built_generation_ = particles.generation();
+                ++compactions_;
+            }
+        }
         if (!force && valid_for(particles) &&
             list_.max_displacement2(particles.position(), n, box) < 0.25 * skin * skin)
             return false;
@@ -53,21 +64,37 @@ public:
     }
     const NeighborList<Dim>& list() const noexcept { return list_; }
     long builds() const noexcept { return builds_; }
+    /// How often the lists were compacted after removals instead of rebuilt.
+    long compactions() const noexcept { return compactions_; }
 
-    /// For a checkpoint: whether the lists are valid and the positions they were built at.
+    /// For a checkpoint: whether the lists are valid, the lists themselves (compacted lists are not what a
+    /// build from the same positions gives) and the positions they were built at. Lists that only miss
+    /// removals (erosion at the end of the step) are saved compacted, as the run would compact them.
     void save(io::Hdf5Group& group, const particles::SphParticles<Dim>& particles) const {
         group.write("builds", static_cast<std::int64_t>(builds_));
-        const bool valid = valid_for(particles);
-        group.write("valid", std::int64_t{valid});
-        if (valid)
-            group.write("reference_positions", reinterpret_cast<const double*>(list_.reference_positions()),
-                        static_cast<std::size_t>(list_.particle_count()), Dim);
+        group.write("compactions", static_cast<std::int64_t>(compactions_));
+        const NeighborList<Dim>* lists = valid_for(particles) ? &list_ : nullptr;
+        NeighborList<Dim> compacted;
+        if (!lists && built_()) {
+            if (const auto* keep = particles.kept_since(built_generation_)) {
+                compacted = list_;
+                compacted.compact(*keep);
+                lists = &compacted;
+            }
+        }
+        group.write("valid", std::int64_t{lists != nullptr});
+        if (!lists) return;
+        const auto n = static_cast<std::size_t>(lists->particle_count());
+        group.write("reference_positions", reinterpret_cast<const double*>(lists->reference_positions()), n, Dim);
+        group.write("offsets", lists->offsets(), n + 1, 1);
+        group.write("indices", lists->indices(), lists->pair_count(), 1);
     }
-    /// Rebuilds the lists of a loaded set from the positions they were built at: the particles are still
-    /// in that build's cell order, so the grid, the order and the lists come out as they were.
+    /// Reads back the lists of a loaded set (checkpoints without them: rebuilt from the positions they
+    /// were built at; the particles are still in that build's cell order, so the lists come out as they were).
     void load(const io::Hdf5Group& group, const particles::SphParticles<Dim>& particles, double radius,
               const PeriodicBox<Dim>& box = {}) {
         builds_ = static_cast<long>(group.read_int("builds"));
+        compactions_ = group.has_attribute("compactions") ? static_cast<long>(group.read_int("compactions")) : 0;
         built_generation_ = never;
         list_ = NeighborList<Dim>();
         if (group.read_int("valid") == 0) return;
@@ -79,6 +106,19 @@ public:
         std::vector<Vec> reference(rows);
         for (std::size_t i = 0; i < rows; ++i)
             for (int k = 0; k < Dim; ++k) reference[i][k] = raw[i * Dim + static_cast<std::size_t>(k)];
+        if (group.has("offsets")) {
+            std::size_t offset_rows = 0, index_rows = 0;
+            auto offsets = group.read_int32("offsets", 1, offset_rows);
+            auto indices = group.read_int32("indices", 1, index_rows);
+            if (offset_rows != rows + 1 || offsets.front() != 0 ||
+                static_cast<std::size_t>(offsets.back()) != index_rows ||
+                !std::is_sorted(offsets.begin(), offsets.end()) ||
+                std::any_of(indices.begin(), indices.end(), [&](Index j) { return j < 0 || j >= n; }))
+                throw io::Hdf5Error(group.path() + ": neighbour lists do not match the particles");
+            list_.assign(std::move(offsets), std::move(indices), std::move(reference));
+            built_generation_ = particles.generation();
+            return;
+        }
         grid_ = make_grid(reference.data(), n, radius, box);
         sort_by_cell(grid_, reference.data(), n, order_, cell_start_);
         for (Index i = 0; i < n; ++i)
@@ -103,7 +143,7 @@ private:
     NeighborList<Dim> list_;
     std::vector<Index> order_, cell_start_;
     std::uint64_t built_generation_ = never;
-    long builds_ = 0;
+    long builds_ = 0, compactions_ = 0;
 };
 
 }  // namespace grit::neighbors

@@ -62,6 +62,28 @@ void for_each_dynamic(Index n, F&& f) {
     for (Index i = 0; i < n; ++i) f(i);
 }
 
+/// Splits [0, n) into one contiguous chunk per thread, in thread order, and calls f(chunk, begin, end)
+/// for each (chunk < max_threads()). For loops that collect a variable amount per i into per-chunk
+/// buffers, joined afterwards in chunk order: the joined result does not depend on the thread count.
+template <class F>
+void for_each_chunk(Index n, F&& f) {
+    if (n < serial_below) {
+        f(0, Index{0}, n);
+        return;
+    }
+#pragma omp parallel
+    {
+#ifdef _OPENMP
+        const int chunk = omp_get_thread_num(), chunks = omp_get_num_threads();
+#else
+        const int chunk = 0, chunks = 1;
+#endif
+        const auto begin = static_cast<Index>(static_cast<long long>(n) * chunk / chunks);
+        const auto end = static_cast<Index>(static_cast<long long>(n) * (chunk + 1) / chunks);
+        f(chunk, begin, end);
+    }
+}
+
 inline constexpr Index reduction_block = 4096;
 
 /// Reduction of f(i) over [0, n) with `combine`, in fixed blocks combined in a fixed order, so the

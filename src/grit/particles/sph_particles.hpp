@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grit/core/types.hpp"
@@ -33,13 +34,15 @@ public:
           material_(&fields_.add<std::int32_t>("material", 0, true)),
           id_(&fields_.add<std::int32_t>("id", -1, true)) {}
 
-    SphParticles(const SphParticles& o) : fields_(o.fields_), next_id_(o.next_id_), generation_(o.generation_) {
+    SphParticles(const SphParticles& o)
+        : fields_(o.fields_), next_id_(o.next_id_), generation_(o.generation_), removal_(o.removal_) {
         rebind();
     }
     SphParticles& operator=(const SphParticles& o) {
         fields_ = o.fields_;
         next_id_ = o.next_id_;
         generation_ = o.generation_;
+        removal_ = o.removal_;
         rebind();
         return *this;
     }
@@ -63,6 +66,27 @@ public:
     void gather(const std::vector<Index>& source) {
         fields_.gather(source);
         ++generation_;
+    }
+    /// Removes particles: new[i] = old[keep[i]], keep ascending. Unlike gather(), the set remembers what
+    /// it kept since the last other change, so that data built for an earlier generation (neighbour
+    /// lists) can be compacted instead of rebuilt (kept_since).
+    void remove(const std::vector<Index>& keep) {
+        const std::uint64_t before = generation_;
+        gather(keep);
+        if (removal_.to == before) {  // removals in a row compose: keep indices of the earlier set
+            std::vector<Index> composed(keep.size());
+            for (std::size_t i = 0; i < keep.size(); ++i) composed[i] = removal_.keep[static_cast<std::size_t>(keep[i])];
+            removal_.keep = std::move(composed);
+        } else {
+            removal_.from = before;
+            removal_.keep = keep;
+        }
+        removal_.to = generation_;
+    }
+    /// When the only changes since `generation` were removals: the indices, in that generation's set,
+    /// of the particles kept (new[i] = then[(*result)[i]]); otherwise null.
+    const std::vector<Index>* kept_since(std::uint64_t generation) const noexcept {
+        return removal_.from == generation && removal_.to == generation_ ? &removal_.keep : nullptr;
     }
     /// Changes each time particles are added, removed or reordered: per-particle data kept outside the
     /// registry (neighbour lists, per-step scratch) records it and is valid while it is unchanged.
@@ -149,6 +173,11 @@ private:
     Field<std::int32_t>* id_;
     std::int64_t next_id_ = 0;
     std::uint64_t generation_ = 0;
+    // The removals since generation `from`, up to `to` (the current one while nothing else changed).
+    struct Removal {
+        std::uint64_t from = ~std::uint64_t{0}, to = ~std::uint64_t{0};
+        std::vector<Index> keep;
+    } removal_;
 };
 
 }  // namespace grit::particles

@@ -675,6 +675,7 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["particle_steps_per_second"] = s.particle_steps_per_second;
     j["pair_interactions_per_second"] = s.pair_interactions_per_second;
     j["neighbor_list_builds"] = state_.neighbors.builds();
+    j["neighbor_list_compactions"] = state_.neighbors.compactions();
     for (const auto& v : s.values)
         if (v.in_summary && v.group.empty()) j[v.name] = json_number(v);
     j["momentum"] = s.momentum;
