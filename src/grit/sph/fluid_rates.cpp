@@ -44,7 +44,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     const auto solid = static_cast<std::int32_t>(Phase::solid);
 
-    parallel::for_each(n, [&](Index a) {
+    parallel::for_each_dynamic(n, [&](Index a) {
         if (phase[a] != fluid) return;
         const Vec xa = x[a];
         const Vec va = v[a];

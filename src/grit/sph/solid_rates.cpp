@@ -92,7 +92,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     work.pair_stress_weight.resize(eps_as > 0.0 ? entries : 0);
     double* pair_f = work.pair_gradient.data();
     double* pair_w = work.pair_stress_weight.data();
-    parallel::for_each(n, [&](Index a) {
+    parallel::for_each_dynamic(n, [&](Index a) {
         if (phase[a] != solid) return;
         double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
         for (Index k = nl.begin(a); k < nl.end(a); ++k) {
@@ -165,7 +165,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const Vec g = prm.gravity;
     const auto wall = static_cast<std::int32_t>(Phase::wall);
 
-    parallel::for_each(n, [&](Index a) {
+    parallel::for_each_dynamic(n, [&](Index a) {
         if (phase[a] != solid) return;
         const Vec xa = x[a];
         const Vec va = v[a];
