@@ -19,13 +19,16 @@ inline core::SymTensor3 artificial_stress(const core::SymTensor3& sigma, double 
         const double c = 0.5 * (sigma.xx + sigma.yy), d = 0.5 * (sigma.xx - sigma.yy);
         const double rad = std::sqrt(d * d + sigma.xy * sigma.xy);
         const double s1 = c + rad, s2 = c - rad;  // principal stresses
-        const double theta = 0.5 * std::atan2(2.0 * sigma.xy, sigma.xx - sigma.yy);
-        const double cs = std::cos(theta), sn = std::sin(theta);
-        const double r1 = s1 > 0.0 ? scale * s1 : 0.0, r2 = s2 > 0.0 ? scale * s2 : 0.0;
-        core::SymTensor3 r;
-        r.xx = r1 * cs * cs + r2 * sn * sn;
-        r.yy = r1 * sn * sn + r2 * cs * cs;
-        r.xy = (r1 - r2) * cs * sn;
+        if (s1 <= 0.0) return core::SymTensor3::zero();  // compression: no artificial stress
+        const double r1 = scale * s1, r2 = s2 > 0.0 ? scale * s2 : 0.0;
+        // Q diag(r1, r2) Q^T through the double angle of the principal axis, cos 2theta = d / rad and
+        // sin 2theta = sigma_xy / rad: no trigonometric calls (atan2, sin and cos were 4 % of an AWJ step).
+        const double cos2 = rad > 0.0 ? d / rad : 1.0, sin2 = rad > 0.0 ? sigma.xy / rad : 0.0;
+        const double mean = 0.5 * (r1 + r2), half_diff = 0.5 * (r1 - r2);
+        core::SymTensor3 r = core::SymTensor3::zero();
+        r.xx = mean + half_diff * cos2;
+        r.yy = mean - half_diff * cos2;
+        r.xy = half_diff * sin2;
         return r;
     }
     Eigen::Matrix3d m;
