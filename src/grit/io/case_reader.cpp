@@ -75,6 +75,11 @@ public:
         : keys_(keys), table_(table), path_(std::move(path)) {}
 
     const std::string& path() const { return path_; }
+    /// Whether `key` holds a table (not an array of tables).
+    bool node_is_table(std::string_view key) const {
+        const toml::node* n = node(key);
+        return n && n->is_table();
+    }
     std::string key_path(std::string_view key) const {
         return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
     }
@@ -276,45 +281,53 @@ void apply_override(toml::table& root, const std::string& assignment) {
     std::stringstream ss(path);
     for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
 
-    toml::table* t = &root;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-        std::string name = parts[k];
-        std::optional<std::size_t> index;
-        if (auto br = name.find('['); br != std::string::npos && name.back() == ']') {
-            try {
-                index = std::stoul(name.substr(br + 1, name.size() - br - 2));
-            } catch (const std::exception&) {
-                throw InputError(fmt::format("--set '{}': bad index in '{}'", assignment, name));
+    // Walks the path from table `t` at part `k`; a part naming an array of tables without an index
+    // continues in every table of it (`--set fluid.solver=isph` sets the key in each [[fluid]] block).
+    std::function<void(toml::table*, std::size_t)> assign = [&](toml::table* t, std::size_t first) {
+        for (std::size_t k = first; k < parts.size(); ++k) {
+            std::string name = parts[k];
+            std::optional<std::size_t> index;
+            if (auto br = name.find('['); br != std::string::npos && name.back() == ']') {
+                try {
+                    index = std::stoul(name.substr(br + 1, name.size() - br - 2));
+                } catch (const std::exception&) {
+                    throw InputError(fmt::format("--set '{}': bad index in '{}'", assignment, name));
+                }
+                name = name.substr(0, br);
             }
-            name = name.substr(0, br);
-        }
-        if (name.empty()) throw InputError(fmt::format("--set '{}': empty key in the path", assignment));
-        const bool last = k + 1 == parts.size();
-        if (index) {
-            toml::array* a = t->get_as<toml::array>(name);
-            if (!a || *index >= a->size() || !(*a)[*index].is_table())
-                throw InputError(fmt::format("--set '{}': there is no table {}[{}] in the case", assignment, name, *index));
-            if (last) throw InputError(fmt::format("--set '{}': cannot replace a whole table", assignment));
-            t = (*a)[*index].as_table();
-            continue;
-        }
-        if (last) {
-            t->insert_or_assign(name, *value_holder.get("v"));
-            // Keys that are alternatives of each other (the case gives one): setting one from the
-            // command line replaces the other, so `--set jet.pressure=2e8` works on a case that gives
-            // jet.velocity, and a sweep over the mass flow rate on one that gives abrasive.spacing.
-            static const std::pair<const char*, const char*> alternatives[] = {
-                {"jet.velocity", "jet.pressure"}, {"abrasive.mass_flow_rate", "abrasive.spacing"}};
-            for (const auto& [a, b] : alternatives) {
-                if (path == a) t->erase(std::string(b).substr(std::string(b).find('.') + 1));
-                if (path == b) t->erase(std::string(a).substr(std::string(a).find('.') + 1));
+            if (name.empty()) throw InputError(fmt::format("--set '{}': empty key in the path", assignment));
+            const bool last = k + 1 == parts.size();
+            if (index) {
+                toml::array* a = t->get_as<toml::array>(name);
+                if (!a || *index >= a->size() || !(*a)[*index].is_table())
+                    throw InputError(fmt::format("--set '{}': there is no table {}[{}] in the case", assignment, name, *index));
+                if (last) throw InputError(fmt::format("--set '{}': cannot replace a whole table", assignment));
+                t = (*a)[*index].as_table();
+                continue;
             }
-        } else {
-            if (!t->contains(name)) t->insert(name, toml::table{});
-            t = t->get_as<toml::table>(name);
-            if (!t) throw InputError(fmt::format("--set '{}': '{}' is not a table", assignment, name));
+            if (last) {
+                t->insert_or_assign(name, *value_holder.get("v"));
+                // Keys that are alternatives of each other (the case gives one): setting one from the
+                // command line replaces the other, so `--set jet.pressure=2e8` works on a case that gives
+                // jet.velocity, and a sweep over the mass flow rate on one that gives abrasive.spacing.
+                static const std::pair<const char*, const char*> alternatives[] = {
+                    {"jet.velocity", "jet.pressure"}, {"abrasive.mass_flow_rate", "abrasive.spacing"}};
+                for (const auto& [a, b] : alternatives) {
+                    if (path == a) t->erase(std::string(b).substr(std::string(b).find('.') + 1));
+                    if (path == b) t->erase(std::string(a).substr(std::string(a).find('.') + 1));
+                }
+            } else {
+                if (toml::array* a = t->get_as<toml::array>(name); a && !a->empty() && a->is_array_of_tables()) {
+                    for (auto& element : *a) assign(element.as_table(), k + 1);
+                    return;
+                }
+                if (!t->contains(name)) t->insert(name, toml::table{});
+                t = t->get_as<toml::table>(name);
+                if (!t) throw InputError(fmt::format("--set '{}': '{}' is not a table", assignment, name));
+            }
         }
-    }
+    };
+    assign(&root, 0);
 }
 
 material::Material read_material(const Section& s, const std::string& name) {
@@ -730,6 +743,62 @@ void read_abrasive(const Section& a, CaseSpec& c, GrainMaterialTable& grain_tabl
     if (ab.stop <= ab.start) a.fail("stop", "must come after abrasive.start");
 }
 
+/// fluid.solver: a setting of the fluid as a whole. The fluid blocks are an array of tables
+/// ([[fluid]]), so the key sits in the blocks (all that give it must agree; `--set fluid.solver=isph`
+/// sets it in each), or, in a case without fluid blocks, in a [fluid] table of its own. Then [isph].
+void read_fluid_solver(const Section& top, CaseSpec& c) {
+    const std::vector<std::string> solvers = {"wcsph", "isph"};
+    if (top.has("fluid") && top.node_is_table("fluid")) {
+        // A [fluid] table (no blocks): only the fluid's settings; take it out of the way of the blocks.
+        const Section f = top.section("fluid");
+        c.fluid_solver = f.choice("solver", c.fluid_solver, solvers);
+    } else {
+        std::string first_key;
+        for (const Section& f : top.sections("fluid")) {
+            if (!f.has("solver")) continue;
+            const std::string s = f.choice("solver", c.fluid_solver, solvers);
+            if (first_key.empty()) {
+                c.fluid_solver = s;
+                first_key = f.key_path("solver");
+            } else if (s != c.fluid_solver) {
+                f.fail("solver", fmt::format("differs from {} = \"{}\": one solver integrates all the fluid",
+                                             first_key, c.fluid_solver));
+            }
+        }
+        if (!first_key.empty()) c.fluid_solver_key = first_key;
+    }
+    const Section isph = top.section("isph");
+    if (top.has("isph") && c.fluid_solver != "isph")
+        throw InputError(fmt::format("key 'isph': the settings of the incompressible solver, but {} = \"{}\"; set "
+                                     "fluid.solver = \"isph\" or remove [isph]", c.fluid_solver_key, c.fluid_solver));
+    c.isph.tolerance = isph.number_or("tolerance", c.isph.tolerance, in_range(1e-14, 1e-2));
+    c.isph.max_iterations = isph.integer_or("max_iterations", c.isph.max_iterations, 1, 1000000);
+    const double interior = c.dimension == 2 ? 2.0 : 3.0;
+    c.isph.free_surface_divergence =
+        isph.number_or("free_surface_divergence", c.dimension == 2 ? 1.5 : 2.4, in_range(0.1 * interior, interior));
+    c.isph.density_relaxation = isph.number_or("density_relaxation", c.isph.density_relaxation, in_range(0.0, 1.0));
+}
+
+/// What the incompressible solver does not (yet) integrate: refused with the key that asked for it.
+void check_fluid_solver(const CaseSpec& c) {
+    if (c.fluid_solver != "isph") return;
+    auto refuse = [&](const std::string& what) {
+        throw InputError(fmt::format("key '{}' = \"isph\": the incompressible solver does not yet handle {}; use "
+                                     "\"wcsph\" for this case",
+                                     c.fluid_solver_key, what));
+    };
+    if (!c.solids.empty()) refuse(fmt::format("SPH solids ({})", c.solids.front().key));
+    if (c.has_jet) refuse("a [jet]");
+    if (!c.inlets.empty()) refuse(fmt::format("inlets ({})", c.inlets.front().key));
+    if (c.fluids.empty()) refuse("a case without [[fluid]] blocks");
+    if (c.has_grains() && c.coupling.enabled)
+        refuse("grains coupled to the fluid (set coupling.enabled = false to run the grains uncoupled)");
+    if (c.shepard_interval > 0)
+        throw InputError(fmt::format("key 'numerics.shepard_interval' = {}: the incompressible solver keeps every "
+                                     "particle at its reference density, so there is no density to filter; set it to "
+                                     "0 with {} = \"isph\"", c.shepard_interval, c.fluid_solver_key));
+}
+
 CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
     if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
     toml::table root;
@@ -784,6 +853,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.check_interval = numerics.integer_or("check_interval", c.check_interval, 1, 1000000);
     c.max_speed = numerics.number_or("max_speed", 0.0, non_negative("[m/s]"));
     c.artificial_stress = numerics.number_or("artificial_stress", c.artificial_stress, in_range(0.0, 1.0));
+    c.kernel_correction = numerics.flag_or("kernel_correction", c.kernel_correction);
+    c.shepard_interval = numerics.integer_or("shepard_interval", c.shepard_interval, 0, 1000000);
     // Particle indices are 32-bit (grit::Index): no case can hold more.
     c.max_particles = numerics.integer_or("max_particles", c.max_particles, 1, std::numeric_limits<Index>::max());
     const double dx = c.particle_spacing;
@@ -794,13 +865,15 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     const Section materials = top.section("materials");
     MaterialTable table(materials, c.materials);
 
-    for (const Section& f : top.sections("fluid")) {
+    read_fluid_solver(top, c);
+    for (const Section& f : top.node_is_table("fluid") ? std::vector<Section>{} : top.sections("fluid")) {
         BlockSpec b;
         b.key = f.path();
         b.shape = read_shape(f, dim, dx, false);
         b.material = table.resolve(f, "material", f.text_or("material", "water"));
         b.velocity = f.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
         b.hydrostatic = f.flag_or("hydrostatic", false);
+        f.has("solver");  // read by read_fluid_solver: a known key here
         c.fluids.push_back(std::move(b));
     }
     for (const Section& s : top.sections("inlet")) {
@@ -1003,6 +1076,11 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
 
     if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
         throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]], [jet] or [[grains]]");
+    check_fluid_solver(c);
+    if (c.shepard_interval > 0 && c.has_grains() && c.coupling.enabled && !c.fluids.empty())
+        throw InputError(fmt::format("key 'numerics.shepard_interval' = {}: the Shepard filter acts on the particle "
+                                     "density, which with grains coupled to the fluid is the porosity-weighted one; "
+                                     "set it to 0 or coupling.enabled = false", c.shepard_interval));
     report_unknown(root, "", keys);
     // Last, once everything else is valid: refuse a case its spacing cannot resolve, or too big to allocate.
     check_resolution(c);

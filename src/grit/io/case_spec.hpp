@@ -182,11 +182,33 @@ struct CaseSpec {
     int check_interval = 50;             ///< numerics.check_interval [steps]
     double max_speed = 0.0;              ///< numerics.max_speed [m/s]: faster is a blow-up (0 = auto)
     double artificial_stress = 0.3;      ///< numerics.artificial_stress: epsilon of Gray et al. (2001)
+    /// numerics.kernel_correction: the fluid sums use the corrected kernel gradient L_a grad W_ab of
+    /// the second seed paper eq. (8) (Bonet & Lok 1999), exact for linear fields whatever the disorder.
+    bool kernel_correction = false;
+    /// numerics.shepard_interval [steps]: every so many steps the fluid density is reset to its Shepard
+    /// average sum m W / sum (m/rho) W (0: never).
+    int shepard_interval = 0;
     /// numerics.max_particles: a case whose estimated SPH particles plus grains exceed it is refused
     /// before anything is allocated (20 million: ~10 GB in 2D, ~14 GB in 3D; see io/particle_budget.cpp).
     Index max_particles = 20'000'000;
 
     std::vector<double> gravity;  ///< physics.gravity [m/s^2]
+
+    /// fluid.solver: "wcsph" (weakly compressible, pressure from the equation of state) or "isph"
+    /// (incompressible, pressure from a Poisson equation each step; second seed paper eq. 6).
+    std::string fluid_solver = "wcsph";
+    std::string fluid_solver_key = "fluid.solver";  ///< where it was set (for messages)
+    /// The incompressible solver's settings ([isph]).
+    struct IsphSpec {
+        double tolerance = 1e-6;       ///< isph.tolerance: relative residual |b - Ax| / |b| of the solve
+        int max_iterations = 2000;     ///< isph.max_iterations: more is a failed solve (an error)
+        /// isph.free_surface_divergence: a fluid particle whose div r = -sum V_b x_ab . grad W_ab is below
+        /// this is on the free surface (p there is a Dirichlet value); 0: 1.5 in 2D, 2.4 in 3D (Lee et al. 2008)
+        double free_surface_divergence = 0.0;
+        /// isph.density_relaxation: gamma of the density-invariance term gamma (rho0 - rho)/(rho dt^2)
+        /// added to the divergence source (Asai et al. 2012); 0: the divergence-free projection alone
+        double density_relaxation = 0.02;
+    } isph;
 
     std::vector<double> domain_min, domain_max;  ///< domain.min, domain.max [m]
     bool remove_leaving = false;                 ///< domain.on_exit = "remove" (else "error")

@@ -9,6 +9,7 @@
 #include "grit/boundary/wall_pressure.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sph/pressure.hpp"
+#include "grit/sph/shepard_filter.hpp"
 
 namespace grit::modules {
 
@@ -44,6 +45,7 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
     auto& ps = state_.particles;
     pipeline.add(Hook::begin_step, "integrate_predict", [this] { integrate_predict(); });
     pipeline.add(Hook::neighbors, "neighbors", [this] { update_neighbors(false); });
+    if (setup_.spec.shepard_interval > 0) pipeline.add(Hook::neighbors, "shepard_filter", [this] { shepard_filter(); });
     pipeline.add(Hook::pressure, "equation_of_state", [this, &ps] {
         sph::update_pressure(ps, setup_.spec.materials, Phase::fluid, nullptr, porosity());
     }, true);
@@ -53,10 +55,16 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
     }, true);
     pipeline.add(Hook::pre_force, "sph_prepare", [this, &ps] {
         sph::prepare_sph_workspace(ps, workspace_);
+        if (setup_.spec.kernel_correction)
+            sph::compute_gradient_correction(ps, state_.neighbors.list(), setup_.kernel, setup_.periodic_box,
+                                             Phase::fluid, sph::phase_bit(Phase::fluid) | sph::phase_bit(Phase::wall) |
+                                                               sph::phase_bit(Phase::solid),
+                                             correction_);
         workspace_generation_ = ps.generation();
     }, true);
     pipeline.add(Hook::force, "sph_fluid", [this, &ps] {
-        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace(), porosity());
+        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace(), porosity(),
+                                 correction_.empty() ? nullptr : correction_.data());
     }, true);
     pipeline.add(Hook::integrate, "integrate_update", [this] { integrate_update(); });
 }
@@ -86,6 +94,23 @@ void SphModule<Dim>::update_neighbors(bool force) {
     const double skin = setup_.spec.neighbor_skin * setup_.smoothing_length;
     const double support = std::visit([](const auto& k) { return k.support(); }, setup_.kernel);
     state_.neighbors.update(state_.particles, support + skin, skin, force, setup_.periodic_box);
+}
+
+template <int Dim>
+void SphModule<Dim>::shepard_filter() {
+    if (state_.clock.step == 0 || state_.clock.step % setup_.spec.shepard_interval != 0) return;
+    auto& ps = state_.particles;
+    sph::shepard_density(ps, state_.neighbors.list(), setup_.kernel, setup_.periodic_box, shepard_);
+    double* rho = ps.density();
+    double* rho_half = ps.density_half();
+    const std::int32_t* ph = ps.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const double* filtered = shepard_.data();
+    parallel::for_each(ps.size(), [&](Index i) {
+        if (ph[i] != fluid) return;
+        rho_half[i] += filtered[i] - rho[i];
+        rho[i] = filtered[i];
+    });
 }
 
 // Leap-frog (Liu & Liu 2003, the scheme of the first seed paper): positions at whole steps, velocity

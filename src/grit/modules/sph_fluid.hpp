@@ -29,6 +29,9 @@ private:
     void integrate_predict();
     void integrate_update();
     void update_neighbors(bool force);
+    /// Every numerics.shepard_interval steps: the whole-step density to its Shepard average, and the
+    /// half-step density by the same change (the leap-frog carries rho^(n+1/2)).
+    void shepard_filter();
     /// The fluid particles' porosity when grains are coupled to the fluid, else nullptr.
     const double* porosity() const;
 
@@ -38,6 +41,8 @@ private:
     std::vector<double> signal_speed_;  ///< per material: the wave speed of the CFL condition [m/s]
     sph::SphWorkspace workspace_;
     std::uint64_t workspace_generation_ = 0;
+    std::vector<sph::GradientCorrection<Dim>> correction_;  ///< L_a (numerics.kernel_correction), else empty
+    std::vector<double> shepard_;                            ///< scratch of the Shepard filter
 };
 
 extern template class SphModule<2>;

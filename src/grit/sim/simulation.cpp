@@ -21,6 +21,7 @@
 #include "grit/modules/coupling.hpp"
 #include "grit/modules/grains.hpp"
 #include "grit/modules/open_boundaries.hpp"
+#include "grit/modules/isph_fluid.hpp"
 #include "grit/modules/sph_fluid.hpp"
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -196,7 +197,10 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     // The modules the case needs. Their order is the order of their stages within a hook point and of
     // their output columns; fields are registered (in this order) before any particle exists.
     modules::SphModule<Dim>* sph = nullptr;
-    if (has_sph_) {
+    if (has_sph_ && spec_.fluid_solver == "isph") {
+        // The incompressible solver takes the fluid and the walls (the case reader refuses what it cannot).
+        modules_.push_back(std::make_unique<modules::IsphModule<Dim>>(state_, setup_));
+    } else if (has_sph_) {
         auto m = std::make_unique<modules::SphModule<Dim>>(state_, setup_);
         sph = m.get();
         modules_.push_back(std::move(m));

@@ -16,10 +16,13 @@ namespace {
 // diffusion acts on rho = rho_bar / eps, the density the pressure follows.
 // `image` takes x_a - x_b to its nearest periodic image; without periodic axes it is OpenImage, the
 // identity, and the loop compiles to what it was before periodic axes existed.
-template <int Dim, class K, bool Porous, class Image>
+// Corrected: the pressure, artificial viscosity and continuity terms take L_a grad W_ab (eq. 8 of the
+// second seed paper) for grad W_ab; the laminar viscosity and the density diffusion, Laplacian forms
+// along x_ab, do not.
+template <int Dim, class K, bool Porous, bool Corrected, class Image>
 void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
                       const FluidRateParameters<Dim>& prm, const SphWorkspace& work, const double* porosity,
-                      const Image image) {
+                      const GradientCorrection<Dim>* correction, const Image image) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const Vec* x = ps.position();
@@ -55,6 +58,7 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const PairCoefficients& ca = coef[mat[a]];
         const double diffusion_scale = 2.0 * delta * h * ca.sound_speed;
         const double hydrostatic_scale = ca.reference_density / (ca.sound_speed * ca.sound_speed);
+        const GradientCorrection<Dim> La = Corrected ? correction[a] : GradientCorrection<Dim>::identity();
 
         double dv[Dim] = {};
         double continuity = 0.0;  // sum_b V_b v_ab . grad W
@@ -75,7 +79,10 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double inv_r2 = 1.0 / (r2 + eps_h2);
             const double inv_rho_sum = 1.0 / (rho_a + rho[b]);
 
-            continuity += volume_b * vx * f;  // eq. (22)
+            if constexpr (Corrected)
+                continuity += volume_b * core::dot(vab, La.apply(xab)) * f;
+            else
+                continuity += volume_b * vx * f;  // eq. (22)
 
             // Pressure (eq. 23) and artificial viscosity (eqs. 26-27), both along grad W.
             const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
@@ -89,7 +96,12 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             // Laminar viscosity, eq. (25) in the form of Lo & Shao (2002), along v_ab.
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
             const double along_v = m[b] * 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
-            for (int d = 0; d < Dim; ++d) dv[d] += xab[d] * along_x + vab[d] * along_v;
+            if constexpr (Corrected) {
+                const Vec gx = La.apply(xab);
+                for (int d = 0; d < Dim; ++d) dv[d] += gx[d] * along_x + vab[d] * along_v;
+            } else {
+                for (int d = 0; d < Dim; ++d) dv[d] += xab[d] * along_x + vab[d] * along_v;
+            }
 
             // Density diffusion between fluid particles only, less its hydrostatic part.
             const double fluid_b = phase[b] == fluid ? 1.0 : 0.0;
@@ -127,17 +139,24 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, SphWorkspace&
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const SphWorkspace& workspace, const double* porosity) {
+                         const SphWorkspace& workspace, const double* porosity,
+                         const GradientCorrection<Dim>* L) {
     std::visit(
         [&](const auto& k) {
             using KernelType = std::decay_t<decltype(k)>;
             neighbors::with_image(parameters.periodic_box, [&](const auto image) {
-                if (porosity)
-                    fluid_rates_loop<Dim, KernelType, true>(particles, neighbors, k, parameters, workspace, porosity,
-                                                            image);
+                if (porosity && L)
+                    fluid_rates_loop<Dim, KernelType, true, true>(particles, neighbors, k, parameters, workspace,
+                                                                  porosity, L, image);
+                else if (porosity)
+                    fluid_rates_loop<Dim, KernelType, true, false>(particles, neighbors, k, parameters, workspace,
+                                                                   porosity, nullptr, image);
+                else if (L)
+                    fluid_rates_loop<Dim, KernelType, false, true>(particles, neighbors, k, parameters, workspace,
+                                                                   nullptr, L, image);
                 else
-                    fluid_rates_loop<Dim, KernelType, false>(particles, neighbors, k, parameters, workspace, nullptr,
-                                                             image);
+                    fluid_rates_loop<Dim, KernelType, false, false>(particles, neighbors, k, parameters, workspace,
+                                                                    nullptr, nullptr, image);
             });
         },
         kernel);
@@ -147,9 +166,9 @@ template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWor
 template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
                                      const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&,
-                                     const double*);
+                                     const double*, const GradientCorrection<2>*);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
                                      const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&,
-                                     const double*);
+                                     const double*, const GradientCorrection<3>*);
 
 }  // namespace grit::sph

@@ -9,6 +9,7 @@
 #include "grit/neighbors/neighbor_list.hpp"
 #include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
+#include "grit/sph/kernel_correction.hpp"
 #include "grit/sph/kernels.hpp"
 #include "grit/sph/pair_coefficients.hpp"
 
@@ -45,18 +46,20 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& particles, SphWor
 ///
 /// The densities read are the locally averaged densities rho_bar = porosity * rho of eq. (22); without
 /// grains (`porosity` null) the porosity is 1 and rho_bar is the particle density.
+/// `correction`: the kernel-gradient correction L_a of each particle (numerics.kernel_correction), or null.
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const SphWorkspace& workspace, const double* porosity = nullptr);
+                         const SphWorkspace& workspace, const double* porosity = nullptr,
+                         const GradientCorrection<Dim>* correction = nullptr);
 
 extern template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWorkspace&);
 extern template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 extern template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
                                             const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&,
-                                            const double*);
+                                            const double*, const GradientCorrection<2>*);
 extern template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
                                             const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&,
-                                            const double*);
+                                            const double*, const GradientCorrection<3>*);
 
 }  // namespace grit::sph

@@ -756,3 +756,42 @@ TEST_F(CaseReaderTest, AbsurdNumberOfOutputsIsRefused) {
     expect_error(minimal_2d, {"time.end=2e4"}, {"key 'time.end' = 20000", "160001 outputs", "output.max_outputs = 100000"});
     (void)read_ok(minimal_2d, {"time.end=2e4", "output.max_outputs=1e6"});
 }
+
+// fluid.solver: the blocks carry it ([[fluid]] is an array of tables), --set reaches every block.
+TEST_F(CaseReaderTest, FluidSolverDefaultsToWcsphAndSetReachesEveryBlock) {
+    EXPECT_EQ(read_ok(minimal_2d).fluid_solver, "wcsph");
+    const std::string two_blocks = minimal_2d + R"(
+[[fluid]]
+shape = "box"
+min = [0.3, 0.0]
+max = [0.35, 0.05]
+material = "water"
+)";
+    const CaseSpec c = read_ok(two_blocks, {"fluid.solver=isph", "isph.tolerance=1e-7"});
+    EXPECT_EQ(c.fluid_solver, "isph");
+    EXPECT_DOUBLE_EQ(c.isph.tolerance, 1e-7);
+    EXPECT_DOUBLE_EQ(c.isph.free_surface_divergence, 1.5);
+    EXPECT_EQ(read_ok(two_blocks, {"fluid[1].solver=wcsph"}).fluid_solver, "wcsph");
+}
+
+TEST_F(CaseReaderTest, FluidSolverBadValuesAreRefused) {
+    expect_error(minimal_2d, {"fluid.solver=implicit"}, {"'fluid[0].solver'", "\"implicit\"", "\"wcsph\", \"isph\""});
+    const std::string two_blocks = minimal_2d + R"(
+[[fluid]]
+shape = "box"
+min = [0.3, 0.0]
+max = [0.35, 0.05]
+material = "water"
+)";
+    expect_error(two_blocks, {"fluid.solver=isph", "fluid[1].solver=wcsph"},
+                 {"'fluid[1].solver'", "\"wcsph\"", "differs from fluid[0].solver = \"isph\""});
+    expect_error(minimal_2d, {"isph.tolerance=1e-7"}, {"'isph'", "fluid.solver = \"wcsph\""});
+    expect_error(minimal_2d, {"fluid.solver=isph", "isph.tolerance=0.5"}, {"'isph.tolerance'", "0.5", "[1e-14, 0.01]"});
+    expect_error(minimal_2d, {"fluid.solver=isph", "numerics.shepard_interval=10"},
+                 {"'numerics.shepard_interval'", "10", "reference density"});
+}
+
+TEST_F(CaseReaderTest, IsphRefusesWhatItDoesNotIntegrate) {
+    expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases/awj_copper_2d/case.toml", {"fluid.solver=isph"},
+                      {"'fluid.solver'", "\"isph\"", "does not yet handle", "\"wcsph\""});
+}

@@ -1,0 +1,118 @@
+// The pressure projection of incompressible SPH (second seed paper eq. 6;
+// Cummins & Rudman 1999):
+//   div(grad p / rho) = div v* / dt + gamma (rho0 - rho_s) / (rho_s dt^2)
+// the second term the density invariance of Asai et al. (2012) on the summation
+// density rho_s, with the SPH Laplacian  sum_b m_b 8/(rho_a+rho_b)^2 (p_a -
+// p_b) x_ab . grad W_ab / (r^2 + eta^2) and the divergence  -(1/rho_a) sum_b
+// m_b v*_ab . grad W_ab,  p = p_D on the free surface and the wall particles'
+// pressure from their fluid neighbours (Adami et al. 2012) as unknowns of the
+// same system. The sparse system is solved by Eigen's BiCGSTAB with a diagonal
+// preconditioner.
+#pragma once
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <vector>
+
+#include "grit/core/vec.hpp"
+#include "grit/neighbors/neighbor_list.hpp"
+#include "grit/neighbors/periodic_box.hpp"
+#include "grit/particles/sph_particles.hpp"
+#include "grit/sph/kernel_correction.hpp"
+#include "grit/sph/kernels.hpp"
+
+namespace grit::sph {
+
+template <int Dim> struct ProjectionSettings {
+  core::Vec<Dim> gravity = core::Vec<Dim>::zero(); ///< [m/s^2]
+  double tolerance = 1e-8; ///< relative residual |b - A p| / |b|
+  int max_iterations = 1000;
+  double free_surface_divergence =
+      1.5; ///< div r below this: a free-surface particle
+  double density_relaxation = 0.0; ///< gamma of the density-invariance source
+  double surface_depth = 0.0; ///< depth of a surface particle's centre below
+                              ///< the surface (dx/2) [m]
+  neighbors::PeriodicBox<Dim> periodic_box;
+  std::vector<double> reference_density; ///< rho0 per material [kg/m^3]
+};
+
+struct ProjectionResult {
+  int iterations = 0;
+  double residual = 0.0; ///< relative residual reached
+  bool converged = true;
+  Index surface_particles = 0;
+};
+
+/// div r_a = -sum_b V_b x_ab . grad W_ab over fluid and wall neighbours (D
+/// inside a full kernel), the inward unit normal sum_b V_b grad W_ab / |.|
+/// (zero where the sum vanishes) and the summation density sum_b m_b W_ab (the
+/// particle itself included); fluid particles only.
+template <int Dim>
+void position_divergence(const particles::SphParticles<Dim> &particles,
+                         const neighbors::NeighborList<Dim> &neighbors,
+                         const Kernel<Dim> &kernel,
+                         const neighbors::PeriodicBox<Dim> &box,
+                         std::vector<double> &divergence,
+                         std::vector<core::Vec<Dim>> &inward_normal,
+                         std::vector<double> &summation_density);
+
+/// div v_a = -(1/rho_a) sum_b m_b (v_a - v_b) . grad W_ab of every fluid
+/// particle over its fluid and wall neighbours (L_a grad W_ab with
+/// `correction`); 0 for the others.
+template <int Dim>
+void velocity_divergence(const particles::SphParticles<Dim> &particles,
+                         const neighbors::NeighborList<Dim> &neighbors,
+                         const Kernel<Dim> &kernel,
+                         const neighbors::PeriodicBox<Dim> &box,
+                         const core::Vec<Dim> *velocity,
+                         const GradientCorrection<Dim> *correction,
+                         std::vector<double> &out);
+
+/// -grad p_a / rho_a of every fluid particle: the symmetric form -sum_b m_b
+/// (p_a/rho_a^2 + p_b/rho_b^2) grad W_ab, or with `correction` the difference
+/// form -(1/rho_a) sum_b V_b (p_b - p_a) L_a grad W_ab, exact for a linear
+/// pressure. Zero for the others.
+template <int Dim>
+void pressure_acceleration(const particles::SphParticles<Dim> &particles,
+                           const neighbors::NeighborList<Dim> &neighbors,
+                           const Kernel<Dim> &kernel,
+                           const neighbors::PeriodicBox<Dim> &box,
+                           const GradientCorrection<Dim> *correction,
+                           std::vector<core::Vec<Dim>> &out);
+
+/// Assembles and solves the pressure system; reuses its storage from step to
+/// step.
+template <int Dim> class PressureProjection {
+public:
+  /// Solves for the pressure of the fluid and wall particles from the predicted
+  /// velocities `v_star` (walls: their own velocity) and writes it to the
+  /// particles' pressure; the previous pressure is the initial guess.
+  /// `free_surface` gets 1 for the surface particles.
+  ProjectionResult solve(particles::SphParticles<Dim> &particles,
+                         const neighbors::NeighborList<Dim> &neighbors,
+                         const Kernel<Dim> &kernel,
+                         const ProjectionSettings<Dim> &settings,
+                         const core::Vec<Dim> *v_star,
+                         const GradientCorrection<Dim> *correction, double dt,
+                         std::int32_t *free_surface);
+
+  /// The system of the last solve (tests).
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> &matrix() const {
+    return matrix_;
+  }
+
+private:
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> matrix_;
+  Eigen::VectorXd rhs_, guess_, solution_;
+  std::vector<Index> row_count_, row_start_;
+  std::vector<int> padded_columns_;
+  std::vector<double> padded_values_;
+  std::vector<double> divergence_r_, divergence_v_, summation_density_;
+  std::vector<core::Vec<Dim>> normal_;
+};
+
+extern template class PressureProjection<2>;
+extern template class PressureProjection<3>;
+
+} // namespace grit::sph
