@@ -13,243 +13,218 @@
 namespace grit::modules {
 
 namespace {
-constexpr double force_coefficient =
-    0.08; ///< of the force condition dt <= C sqrt(h / |a|)
+constexpr double force_coefficient = 0.08;  ///< of the force condition dt <= C sqrt(h / |a|)
 constexpr auto fluid_phase = static_cast<std::int32_t>(Phase::fluid);
 constexpr auto wall_phase = static_cast<std::int32_t>(Phase::wall);
-} // namespace
+}  // namespace
 
 template <int Dim>
-IsphModule<Dim>::IsphModule(sim::State<Dim> &state,
-                            const sim::RunSetup<Dim> &setup)
-    : state_(state), setup_(setup) {
-  const auto &spec = setup.spec;
-  viscous_.gravity = core::to_vec<Dim>(spec.gravity);
-  viscous_.hydrostatic_gravity = viscous_.gravity;
-  viscous_.periodic_box = setup.periodic_box;
-  viscous_.density_diffusion =
-      0.0; // delta-SPH damps the acoustic noise of WCSPH: ISPH has none
-  const double h = setup.smoothing_length;
-  for (const auto &m : spec.materials) {
-    viscous_.materials.push_back({m.sound_speed(), m.reference_density(),
-                                  m.artificial_viscosity_alpha,
-                                  m.artificial_viscosity_beta,
-                                  m.dynamic_viscosity / m.reference_density()});
-    // Monaghan's artificial viscosity acts as nu = alpha c0 h / (2 (D + 2));
-    // its explicit limit 0.125 h^2 / nu bounds the step too (c0 is then only
-    // the viscosity's velocity scale).
-    const double nu =
-        m.artificial_viscosity_alpha * m.sound_speed() * h / (2.0 * (Dim + 2));
-    av_limit_.push_back(nu > 0.0 ? 0.125 * h * h / nu
-                                 : std::numeric_limits<double>::infinity());
-    projection_settings_.reference_density.push_back(m.reference_density());
-  }
-  projection_settings_.gravity = viscous_.gravity;
-  projection_settings_.tolerance = spec.isph.tolerance;
-  projection_settings_.max_iterations = spec.isph.max_iterations;
-  projection_settings_.free_surface_divergence =
-      spec.isph.free_surface_divergence;
-  projection_settings_.density_relaxation = spec.isph.density_relaxation;
-  projection_settings_.surface_depth = 0.5 * setup.spacing;
-  projection_settings_.periodic_box = setup.periodic_box;
-  spdlog::warn("fluid.solver = \"isph\" is experimental: its pressure is not "
-               "yet validated (docs/validation.md, "
-               "incompressible SPH)");
-  // 1 on the particles the projection treats as free surface (p = p_D there),
-  // for ParaView.
-  state_.particles.fields().template add<std::int32_t>("free_surface", 0, true,
-                                                       false);
-}
-
-template <int Dim> void IsphModule<Dim>::initialise() {
-  // Incompressible: every fluid and wall particle starts at its material's
-  // reference density (the hydrostatic start of a block keeps its pressure, the
-  // first guess of the first solve).
-  auto &ps = state_.particles;
-  double *rho = ps.density();
-  double *rho_half = ps.density_half();
-  const std::int32_t *ph = ps.phase();
-  const std::int32_t *mat = ps.material();
-  for (Index i = 0; i < ps.size(); ++i) {
-    if (ph[i] != fluid_phase && ph[i] != wall_phase)
-      continue;
-    rho[i] = rho_half[i] =
-        projection_settings_
-            .reference_density[static_cast<std::size_t>(mat[i])];
-  }
-}
-
-template <int Dim> void IsphModule<Dim>::install(sim::Pipeline &pipeline) {
-  using sim::Hook;
-  pipeline.add(Hook::neighbors, "neighbors",
-               [this] { update_neighbors(false); });
-  pipeline.add(Hook::pre_force, "isph_prepare", [this] { prepare(); });
-  pipeline.add(Hook::force, "isph_predict", [this] { predict(); });
-  pipeline.add(Hook::force, "pressure_solve", [this] { project(); });
-  pipeline.add(Hook::integrate, "integrate_update", [this] { integrate(); });
-}
-
-template <int Dim> void IsphModule<Dim>::prime() { update_neighbors(true); }
-
-template <int Dim> void IsphModule<Dim>::update_neighbors(bool force) {
-  const double skin = setup_.spec.neighbor_skin * setup_.smoothing_length;
-  const double support =
-      std::visit([](const auto &k) { return k.support(); }, setup_.kernel);
-  state_.neighbors.update(state_.particles, support + skin, skin, force,
-                          setup_.periodic_box);
-}
-
-template <int Dim> void IsphModule<Dim>::prepare() {
-  auto &ps = state_.particles;
-  sph::prepare_sph_workspace(ps, workspace_);
-  // The predictor's sums carry no pressure: it comes from the projection.
-  std::fill(workspace_.pressure_term.begin(), workspace_.pressure_term.end(),
-            0.0);
-  if (setup_.spec.kernel_correction)
-    sph::compute_gradient_correction(ps, state_.neighbors.list(), setup_.kernel,
-                                     setup_.periodic_box, Phase::fluid,
-                                     sph::phase_bit(Phase::fluid) |
-                                         sph::phase_bit(Phase::wall),
-                                     correction_);
-}
-
-template <int Dim> void IsphModule<Dim>::predict() {
-  // v* = v^n + dt (g + viscous terms)
-  auto &ps = state_.particles;
-  const Index n = ps.size();
-  sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, viscous_,
-                           workspace_, nullptr,
-                           correction_.empty() ? nullptr : correction_.data());
-  const double dt = state_.clock.dt;
-  const auto *v = ps.velocity();
-  const auto *a = ps.acceleration();
-  const std::int32_t *ph = ps.phase();
-  v_star_.resize(static_cast<std::size_t>(n));
-  parallel::for_each(n, [&](Index i) {
-    v_star_[static_cast<std::size_t>(i)] =
-        ph[i] == fluid_phase ? v[i] + a[i] * dt : v[i];
-  });
-}
-
-template <int Dim> void IsphModule<Dim>::project() {
-  auto &ps = state_.particles;
-  const auto &nl = state_.neighbors.list();
-  const auto *L = correction_.empty() ? nullptr : correction_.data();
-  auto &surface = ps.fields().template get<std::int32_t>("free_surface");
-  last_ = projection_.solve(ps, nl, setup_.kernel, projection_settings_,
-                            v_star_.data(), L, state_.clock.dt, surface.data());
-  ++solves_;
-  iterations_total_ += last_.iterations;
-  if (!last_.converged) {
-    failure_ = fmt::format(
-        "the pressure Poisson solve did not converge: relative residual {:.3g} "
-        "after {} "
-        "iterations (isph.tolerance = {:g}, isph.max_iterations = {})",
-        last_.residual, last_.iterations, setup_.spec.isph.tolerance,
-        setup_.spec.isph.max_iterations);
-    return;
-  }
-  sph::pressure_acceleration(ps, nl, setup_.kernel, setup_.periodic_box, L,
-                             pressure_acc_);
-  auto *a = ps.acceleration();
-  parallel::for_each(ps.size(), [&](Index i) {
-    a[i] += pressure_acc_[static_cast<std::size_t>(i)];
-  });
-}
-
-template <int Dim> void IsphModule<Dim>::integrate() {
-  // v^(n+1) = v* - dt grad p / rho; x^(n+1) = x^n + dt (v^n + v^(n+1)) / 2. The
-  // density stays rho0: the particles carry no compression (a continuity
-  // density drifted to 0.7 rho0 at the dam break's front, whose invariance term
-  // then drove the pressure to oscillate; docs/theory.md).
-  if (!failure_.empty())
-    return; // the health check reports it with the last good state
-  auto &ps = state_.particles;
-  const Index n = ps.size();
-  const double dt = state_.clock.dt;
-  auto *x = ps.position();
-  auto *v = ps.velocity();
-  auto *v_half = ps.velocity_half();
-  const std::int32_t *ph = ps.phase();
-  const auto &box = setup_.periodic_box;
-  parallel::for_each(n, [&](Index i) {
-    if (ph[i] != fluid_phase)
-      return;
-    const auto k = static_cast<std::size_t>(i);
-    const auto v_new = v_star_[k] + pressure_acc_[k] * dt;
-    x[i] += (v[i] + v_new) * (0.5 * dt);
-    if (box.any())
-      x[i] = box.wrap(x[i]);
-    v[i] = v_half[i] = v_new;
-  });
-}
-
-template <int Dim> double IsphModule<Dim>::stable_time_step() const {
-  // No sound speed: the velocity CFL C_F h / |v|max, the force condition 0.08
-  // sqrt(h / |a|max) with |a| at least |g|, and the viscous limits 0.125 h^2 /
-  // nu (laminar and artificial).
-  const auto &ps = state_.particles;
-  const double h = setup_.smoothing_length;
-  const auto *v = ps.velocity();
-  const auto *a =
-      ps.fields().template get<core::Vec<Dim>>("acceleration").data();
-  const std::int32_t *ph = ps.phase();
-  struct Extremes {
-    double v2, a2;
-  };
-  const Extremes e = parallel::reduce(
-      ps.size(), Extremes{0.0, 0.0},
-      [&](Index i) {
-        if (ph[i] != fluid_phase)
-          return Extremes{0.0, 0.0};
-        return Extremes{core::norm2(v[i]), core::norm2(a[i])};
-      },
-      [](Extremes l, Extremes r) {
-        return Extremes{std::max(l.v2, r.v2), std::max(l.a2, r.a2)};
-      });
-  const double inf = std::numeric_limits<double>::infinity();
-  double dt = e.v2 > 0.0 ? setup_.spec.cfl * h / std::sqrt(e.v2) : inf;
-  const double accel = std::max(std::sqrt(e.a2), core::norm(viscous_.gravity));
-  // 0.08, not WCSPH's 0.25: the hydrostatic tank (dx 1 cm) held at rest for 2 s
-  // with 0.084 and blew up from the wall layers with 0.14 and 0.25
-  // (docs/validation.md).
-  if (accel > 0.0)
-    dt = std::min(dt, force_coefficient * std::sqrt(h / accel));
-  for (std::size_t m = 0; m < viscous_.materials.size(); ++m) {
-    const double nu = viscous_.materials[m].kinematic_viscosity;
-    if (nu > 0.0)
-      dt = std::min(dt, 0.125 * h * h / nu);
-    dt = std::min(dt, av_limit_[m]);
-  }
-  if (dt == inf) { // at rest without gravity: the fastest wave of the materials
-                   // sets the scale
-    double c = 0.0;
-    for (const auto &m : viscous_.materials)
-      c = std::max(c, m.sound_speed);
-    dt = setup_.spec.cfl * h / c;
-  }
-  return dt;
-}
-
-template <int Dim> std::string IsphModule<Dim>::check_health() const {
-  return failure_;
+IsphModule<Dim>::IsphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup) : state_(state), setup_(setup) {
+    const auto& spec = setup.spec;
+    viscous_.gravity = core::to_vec<Dim>(spec.gravity);
+    viscous_.hydrostatic_gravity = viscous_.gravity;
+    viscous_.periodic_box = setup.periodic_box;
+    viscous_.density_diffusion = 0.0;  // delta-SPH damps the acoustic noise of WCSPH: ISPH has none
+    const double h = setup.smoothing_length;
+    for (const auto& m : spec.materials) {
+        viscous_.materials.push_back({m.sound_speed(), m.reference_density(), m.artificial_viscosity_alpha,
+                                      m.artificial_viscosity_beta, m.dynamic_viscosity / m.reference_density()});
+        // Monaghan's artificial viscosity acts as nu = alpha c0 h / (2 (D + 2));
+        // its explicit limit 0.125 h^2 / nu bounds the step too (c0 is then only
+        // the viscosity's velocity scale).
+        const double nu = m.artificial_viscosity_alpha * m.sound_speed() * h / (2.0 * (Dim + 2));
+        av_limit_.push_back(nu > 0.0 ? 0.125 * h * h / nu : std::numeric_limits<double>::infinity());
+        projection_settings_.reference_density.push_back(m.reference_density());
+    }
+    projection_settings_.gravity = viscous_.gravity;
+    projection_settings_.tolerance = spec.isph.tolerance;
+    projection_settings_.max_iterations = spec.isph.max_iterations;
+    projection_settings_.free_surface_divergence = spec.isph.free_surface_divergence;
+    projection_settings_.density_relaxation = spec.isph.density_relaxation;
+    projection_settings_.surface_depth = 0.5 * setup.spacing;
+    projection_settings_.periodic_box = setup.periodic_box;
+    spdlog::warn(
+        "fluid.solver = \"isph\" is experimental: its pressure is not "
+        "yet validated (docs/validation.md, "
+        "incompressible SPH)");
+    // 1 on the particles the projection treats as free surface (p = p_D there),
+    // for ParaView.
+    state_.particles.fields().template add<std::int32_t>("free_surface", 0, true, false);
 }
 
 template <int Dim>
-void IsphModule<Dim>::output_values(std::vector<sim::OutputValue> &out) const {
-  out.push_back(
-      sim::OutputValue::count("pressure_iterations", last_.iterations));
-  out.push_back(sim::OutputValue::real("pressure_residual", last_.residual));
-  out.push_back(sim::OutputValue::count(
-      "free_surface_particles", static_cast<double>(last_.surface_particles)));
-  out.push_back(
-      sim::OutputValue::real(
-          "pressure_iterations_mean",
-          solves_ > 0 ? iterations_total_ / static_cast<double>(solves_) : 0.0)
-          .summary_only());
+void IsphModule<Dim>::initialise() {
+    // Incompressible: every fluid and wall particle starts at its material's
+    // reference density (the hydrostatic start of a block keeps its pressure, the
+    // first guess of the first solve).
+    auto& ps = state_.particles;
+    double* rho = ps.density();
+    double* rho_half = ps.density_half();
+    const std::int32_t* ph = ps.phase();
+    const std::int32_t* mat = ps.material();
+    for (Index i = 0; i < ps.size(); ++i) {
+        if (ph[i] != fluid_phase && ph[i] != wall_phase) continue;
+        rho[i] = rho_half[i] = projection_settings_.reference_density[static_cast<std::size_t>(mat[i])];
+    }
+}
+
+template <int Dim>
+void IsphModule<Dim>::install(sim::Pipeline& pipeline) {
+    using sim::Hook;
+    pipeline.add(Hook::neighbors, "neighbors", [this] { update_neighbors(false); });
+    pipeline.add(Hook::pre_force, "isph_prepare", [this] { prepare(); });
+    pipeline.add(Hook::force, "isph_predict", [this] { predict(); });
+    pipeline.add(Hook::force, "pressure_solve", [this] { project(); });
+    pipeline.add(Hook::integrate, "integrate_update", [this] { integrate(); });
+}
+
+template <int Dim>
+void IsphModule<Dim>::prime() {
+    update_neighbors(true);
+}
+
+template <int Dim>
+void IsphModule<Dim>::update_neighbors(bool force) {
+    const double skin = setup_.spec.neighbor_skin * setup_.smoothing_length;
+    const double support = std::visit([](const auto& k) { return k.support(); }, setup_.kernel);
+    state_.neighbors.update(state_.particles, support + skin, skin, force, setup_.periodic_box);
+}
+
+template <int Dim>
+void IsphModule<Dim>::prepare() {
+    auto& ps = state_.particles;
+    sph::prepare_sph_workspace(ps, workspace_);
+    // The predictor's sums carry no pressure: it comes from the projection.
+    std::fill(workspace_.pressure_term.begin(), workspace_.pressure_term.end(), 0.0);
+    if (setup_.spec.kernel_correction)
+        sph::compute_gradient_correction(ps, state_.neighbors.list(), setup_.kernel, setup_.periodic_box, Phase::fluid,
+                                         sph::phase_bit(Phase::fluid) | sph::phase_bit(Phase::wall), correction_);
+}
+
+template <int Dim>
+void IsphModule<Dim>::predict() {
+    // v* = v^n + dt (g + viscous terms)
+    auto& ps = state_.particles;
+    const Index n = ps.size();
+    sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, viscous_, workspace_, nullptr,
+                             correction_.empty() ? nullptr : correction_.data());
+    const double dt = state_.clock.dt;
+    const auto* v = ps.velocity();
+    const auto* a = ps.acceleration();
+    const std::int32_t* ph = ps.phase();
+    v_star_.resize(static_cast<std::size_t>(n));
+    parallel::for_each(
+        n, [&](Index i) { v_star_[static_cast<std::size_t>(i)] = ph[i] == fluid_phase ? v[i] + a[i] * dt : v[i]; });
+}
+
+template <int Dim>
+void IsphModule<Dim>::project() {
+    auto& ps = state_.particles;
+    const auto& nl = state_.neighbors.list();
+    const auto* L = correction_.empty() ? nullptr : correction_.data();
+    auto& surface = ps.fields().template get<std::int32_t>("free_surface");
+    last_ = projection_.solve(ps, nl, setup_.kernel, projection_settings_, v_star_.data(), L, state_.clock.dt,
+                              surface.data());
+    ++solves_;
+    iterations_total_ += last_.iterations;
+    if (!last_.converged) {
+        failure_ = fmt::format(
+            "the pressure Poisson solve did not converge: relative residual {:.3g} "
+            "after {} "
+            "iterations (isph.tolerance = {:g}, isph.max_iterations = {})",
+            last_.residual, last_.iterations, setup_.spec.isph.tolerance, setup_.spec.isph.max_iterations);
+        return;
+    }
+    sph::pressure_acceleration(ps, nl, setup_.kernel, setup_.periodic_box, L, pressure_acc_);
+    auto* a = ps.acceleration();
+    parallel::for_each(ps.size(), [&](Index i) { a[i] += pressure_acc_[static_cast<std::size_t>(i)]; });
+}
+
+template <int Dim>
+void IsphModule<Dim>::integrate() {
+    // v^(n+1) = v* - dt grad p / rho; x^(n+1) = x^n + dt (v^n + v^(n+1)) / 2. The
+    // density stays rho0: the particles carry no compression (a continuity
+    // density drifted to 0.7 rho0 at the dam break's front, whose invariance term
+    // then drove the pressure to oscillate; docs/theory.md).
+    if (!failure_.empty()) return;  // the health check reports it with the last good state
+    auto& ps = state_.particles;
+    const Index n = ps.size();
+    const double dt = state_.clock.dt;
+    auto* x = ps.position();
+    auto* v = ps.velocity();
+    auto* v_half = ps.velocity_half();
+    const std::int32_t* ph = ps.phase();
+    const auto& box = setup_.periodic_box;
+    parallel::for_each(n, [&](Index i) {
+        if (ph[i] != fluid_phase) return;
+        const auto k = static_cast<std::size_t>(i);
+        const auto v_new = v_star_[k] + pressure_acc_[k] * dt;
+        x[i] += (v[i] + v_new) * (0.5 * dt);
+        if (box.any()) x[i] = box.wrap(x[i]);
+        v[i] = v_half[i] = v_new;
+    });
+}
+
+template <int Dim>
+double IsphModule<Dim>::stable_time_step() const {
+    // No sound speed: the velocity CFL C_F h / |v|max, the force condition 0.08
+    // sqrt(h / |a|max) with |a| at least |g|, and the viscous limits 0.125 h^2 /
+    // nu (laminar and artificial).
+    const auto& ps = state_.particles;
+    const double h = setup_.smoothing_length;
+    const auto* v = ps.velocity();
+    const auto* a = ps.fields().template get<core::Vec<Dim>>("acceleration").data();
+    const std::int32_t* ph = ps.phase();
+    struct Extremes {
+        double v2, a2;
+    };
+    const Extremes e = parallel::reduce(
+        ps.size(), Extremes{0.0, 0.0},
+        [&](Index i) {
+            if (ph[i] != fluid_phase) return Extremes{0.0, 0.0};
+            return Extremes{core::norm2(v[i]), core::norm2(a[i])};
+        },
+        [](Extremes l, Extremes r) {
+            return Extremes{std::max(l.v2, r.v2), std::max(l.a2, r.a2)};
+        });
+    const double inf = std::numeric_limits<double>::infinity();
+    double dt = e.v2 > 0.0 ? setup_.spec.cfl * h / std::sqrt(e.v2) : inf;
+    const double accel = std::max(std::sqrt(e.a2), core::norm(viscous_.gravity));
+    // 0.08, not WCSPH's 0.25: the hydrostatic tank (dx 1 cm) held at rest for 2 s
+    // with 0.084 and blew up from the wall layers with 0.14 and 0.25
+    // (docs/validation.md).
+    if (accel > 0.0) dt = std::min(dt, force_coefficient * std::sqrt(h / accel));
+    for (std::size_t m = 0; m < viscous_.materials.size(); ++m) {
+        const double nu = viscous_.materials[m].kinematic_viscosity;
+        if (nu > 0.0) dt = std::min(dt, 0.125 * h * h / nu);
+        dt = std::min(dt, av_limit_[m]);
+    }
+    if (dt == inf) {  // at rest without gravity: the fastest wave of the materials
+                      // sets the scale
+        double c = 0.0;
+        for (const auto& m : viscous_.materials)
+            c = std::max(c, m.sound_speed);
+        dt = setup_.spec.cfl * h / c;
+    }
+    return dt;
+}
+
+template <int Dim>
+std::string IsphModule<Dim>::check_health() const {
+    return failure_;
+}
+
+template <int Dim>
+void IsphModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    out.push_back(sim::OutputValue::count("pressure_iterations", last_.iterations));
+    out.push_back(sim::OutputValue::real("pressure_residual", last_.residual));
+    out.push_back(sim::OutputValue::count("free_surface_particles", static_cast<double>(last_.surface_particles)));
+    out.push_back(sim::OutputValue::real("pressure_iterations_mean",
+                                         solves_ > 0 ? iterations_total_ / static_cast<double>(solves_) : 0.0)
+                      .summary_only());
 }
 
 template class IsphModule<2>;
 template class IsphModule<3>;
 
-} // namespace grit::modules
+}  // namespace grit::modules

@@ -14,44 +14,43 @@
 
 namespace grit::modules {
 
-template <int Dim> class IsphModule final : public sim::Module<Dim> {
-public:
-  IsphModule(sim::State<Dim> &state, const sim::RunSetup<Dim> &setup);
+template <int Dim>
+class IsphModule final : public sim::Module<Dim> {
+  public:
+    IsphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup);
 
-  std::string name() const override { return "isph"; }
-  void install(sim::Pipeline &pipeline) override;
-  void initialise() override;
-  void prime() override;
-  double stable_time_step() const override;
-  std::string check_health() const override;
-  void output_values(std::vector<sim::OutputValue> &out) const override;
+    std::string name() const override { return "isph"; }
+    void install(sim::Pipeline& pipeline) override;
+    void initialise() override;
+    void prime() override;
+    double stable_time_step() const override;
+    std::string check_health() const override;
+    void output_values(std::vector<sim::OutputValue>& out) const override;
 
-private:
-  void update_neighbors(bool force);
-  void prepare();
-  void predict();
-  void project();
-  void integrate();
+  private:
+    void update_neighbors(bool force);
+    void prepare();
+    void predict();
+    void project();
+    void integrate();
 
-  sim::State<Dim> &state_;
-  const sim::RunSetup<Dim> &setup_;
-  sph::FluidRateParameters<Dim>
-      viscous_; ///< the fluid sums without pressure: gravity and viscosity
-  sph::ProjectionSettings<Dim> projection_settings_;
-  sph::PressureProjection<Dim> projection_;
-  sph::SphWorkspace workspace_;
-  std::vector<sph::GradientCorrection<Dim>>
-      correction_; ///< L_a (numerics.kernel_correction), else empty
-  std::vector<core::Vec<Dim>> v_star_, pressure_acc_;
-  std::vector<double> av_limit_; ///< per material: 0.125 h^2 / nu of its
-                                 ///< artificial viscosity [s]
-  sph::ProjectionResult last_;
-  long solves_ = 0;
-  double iterations_total_ = 0.0;
-  std::string failure_;
+    sim::State<Dim>& state_;
+    const sim::RunSetup<Dim>& setup_;
+    sph::FluidRateParameters<Dim> viscous_;  ///< the fluid sums without pressure: gravity and viscosity
+    sph::ProjectionSettings<Dim> projection_settings_;
+    sph::PressureProjection<Dim> projection_;
+    sph::SphWorkspace workspace_;
+    std::vector<sph::GradientCorrection<Dim>> correction_;  ///< L_a (numerics.kernel_correction), else empty
+    std::vector<core::Vec<Dim>> v_star_, pressure_acc_;
+    std::vector<double> av_limit_;  ///< per material: 0.125 h^2 / nu of its
+                                    ///< artificial viscosity [s]
+    sph::ProjectionResult last_;
+    long solves_ = 0;
+    double iterations_total_ = 0.0;
+    std::string failure_;
 };
 
 extern template class IsphModule<2>;
 extern template class IsphModule<3>;
 
-} // namespace grit::modules
+}  // namespace grit::modules

@@ -17,22 +17,23 @@ namespace grit::sph {
 
 /// L_a, a symmetric Dim x Dim matrix (grad W_ab is along x_ab, so the sum is
 /// -sum_b V_b f_ab x_ab x_ab^T).
-template <int Dim> struct GradientCorrection {
-  double m[Dim][Dim];
+template <int Dim>
+struct GradientCorrection {
+    double m[Dim][Dim];
 
-  static GradientCorrection identity() noexcept {
-    GradientCorrection c{};
-    for (int i = 0; i < Dim; ++i)
-      c.m[i][i] = 1.0;
-    return c;
-  }
-  core::Vec<Dim> apply(const core::Vec<Dim> &g) const noexcept {
-    core::Vec<Dim> out = core::Vec<Dim>::zero();
-    for (int i = 0; i < Dim; ++i)
-      for (int j = 0; j < Dim; ++j)
-        out[i] += m[i][j] * g[j];
-    return out;
-  }
+    static GradientCorrection identity() noexcept {
+        GradientCorrection c{};
+        for (int i = 0; i < Dim; ++i)
+            c.m[i][i] = 1.0;
+        return c;
+    }
+    core::Vec<Dim> apply(const core::Vec<Dim>& g) const noexcept {
+        core::Vec<Dim> out = core::Vec<Dim>::zero();
+        for (int i = 0; i < Dim; ++i)
+            for (int j = 0; j < Dim; ++j)
+                out[i] += m[i][j] * g[j];
+        return out;
+    }
 };
 
 /// Below this determinant of the moment matrix (1 for a full kernel on a
@@ -45,25 +46,23 @@ inline constexpr double min_correction_determinant = 1e-3;
 /// its neighbours of the phases in `neighbour_phases` (a bit mask over Phase
 /// values).
 template <int Dim>
-void compute_gradient_correction(const particles::SphParticles<Dim> &particles,
-                                 const neighbors::NeighborList<Dim> &neighbors,
-                                 const Kernel<Dim> &kernel,
-                                 const neighbors::PeriodicBox<Dim> &box,
-                                 Phase phase, unsigned neighbour_phases,
-                                 std::vector<GradientCorrection<Dim>> &out);
+void compute_gradient_correction(const particles::SphParticles<Dim>& particles,
+                                 const neighbors::NeighborList<Dim>& neighbors, const Kernel<Dim>& kernel,
+                                 const neighbors::PeriodicBox<Dim>& box, Phase phase, unsigned neighbour_phases,
+                                 std::vector<GradientCorrection<Dim>>& out);
 
 /// The mask of one phase, for `neighbour_phases`.
 constexpr unsigned phase_bit(Phase p) noexcept {
-  return 1u << static_cast<unsigned>(p);
+    return 1u << static_cast<unsigned>(p);
 }
 
-extern template void compute_gradient_correction<2>(
-    const particles::SphParticles<2> &, const neighbors::NeighborList<2> &,
-    const Kernel<2> &, const neighbors::PeriodicBox<2> &, Phase, unsigned,
-    std::vector<GradientCorrection<2>> &);
-extern template void compute_gradient_correction<3>(
-    const particles::SphParticles<3> &, const neighbors::NeighborList<3> &,
-    const Kernel<3> &, const neighbors::PeriodicBox<3> &, Phase, unsigned,
-    std::vector<GradientCorrection<3>> &);
+extern template void compute_gradient_correction<2>(const particles::SphParticles<2>&,
+                                                    const neighbors::NeighborList<2>&, const Kernel<2>&,
+                                                    const neighbors::PeriodicBox<2>&, Phase, unsigned,
+                                                    std::vector<GradientCorrection<2>>&);
+extern template void compute_gradient_correction<3>(const particles::SphParticles<3>&,
+                                                    const neighbors::NeighborList<3>&, const Kernel<3>&,
+                                                    const neighbors::PeriodicBox<3>&, Phase, unsigned,
+                                                    std::vector<GradientCorrection<3>>&);
 
-} // namespace grit::sph
+}  // namespace grit::sph

@@ -24,24 +24,24 @@
 
 namespace grit::sph {
 
-template <int Dim> struct ProjectionSettings {
-  core::Vec<Dim> gravity = core::Vec<Dim>::zero(); ///< [m/s^2]
-  double tolerance = 1e-8; ///< relative residual |b - A p| / |b|
-  int max_iterations = 1000;
-  double free_surface_divergence =
-      1.5; ///< div r below this: a free-surface particle
-  double density_relaxation = 0.0; ///< gamma of the density-invariance source
-  double surface_depth = 0.0; ///< depth of a surface particle's centre below
-                              ///< the surface (dx/2) [m]
-  neighbors::PeriodicBox<Dim> periodic_box;
-  std::vector<double> reference_density; ///< rho0 per material [kg/m^3]
+template <int Dim>
+struct ProjectionSettings {
+    core::Vec<Dim> gravity = core::Vec<Dim>::zero();  ///< [m/s^2]
+    double tolerance = 1e-8;                          ///< relative residual |b - A p| / |b|
+    int max_iterations = 1000;
+    double free_surface_divergence = 1.5;  ///< div r below this: a free-surface particle
+    double density_relaxation = 0.0;       ///< gamma of the density-invariance source
+    double surface_depth = 0.0;            ///< depth of a surface particle's centre below
+                                           ///< the surface (dx/2) [m]
+    neighbors::PeriodicBox<Dim> periodic_box;
+    std::vector<double> reference_density;  ///< rho0 per material [kg/m^3]
 };
 
 struct ProjectionResult {
-  int iterations = 0;
-  double residual = 0.0; ///< relative residual reached
-  bool converged = true;
-  Index surface_particles = 0;
+    int iterations = 0;
+    double residual = 0.0;  ///< relative residual reached
+    bool converged = true;
+    Index surface_particles = 0;
 };
 
 /// div r_a = -sum_b V_b x_ab . grad W_ab over fluid and wall neighbours (D
@@ -49,70 +49,57 @@ struct ProjectionResult {
 /// (zero where the sum vanishes) and the summation density sum_b m_b W_ab (the
 /// particle itself included); fluid particles only.
 template <int Dim>
-void position_divergence(const particles::SphParticles<Dim> &particles,
-                         const neighbors::NeighborList<Dim> &neighbors,
-                         const Kernel<Dim> &kernel,
-                         const neighbors::PeriodicBox<Dim> &box,
-                         std::vector<double> &divergence,
-                         std::vector<core::Vec<Dim>> &inward_normal,
-                         std::vector<double> &summation_density);
+void position_divergence(const particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                         const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box,
+                         std::vector<double>& divergence, std::vector<core::Vec<Dim>>& inward_normal,
+                         std::vector<double>& summation_density);
 
 /// div v_a = -(1/rho_a) sum_b m_b (v_a - v_b) . grad W_ab of every fluid
 /// particle over its fluid and wall neighbours (L_a grad W_ab with
 /// `correction`); 0 for the others.
 template <int Dim>
-void velocity_divergence(const particles::SphParticles<Dim> &particles,
-                         const neighbors::NeighborList<Dim> &neighbors,
-                         const Kernel<Dim> &kernel,
-                         const neighbors::PeriodicBox<Dim> &box,
-                         const core::Vec<Dim> *velocity,
-                         const GradientCorrection<Dim> *correction,
-                         std::vector<double> &out);
+void velocity_divergence(const particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                         const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box,
+                         const core::Vec<Dim>* velocity, const GradientCorrection<Dim>* correction,
+                         std::vector<double>& out);
 
 /// -grad p_a / rho_a of every fluid particle: the symmetric form -sum_b m_b
 /// (p_a/rho_a^2 + p_b/rho_b^2) grad W_ab, or with `correction` the difference
 /// form -(1/rho_a) sum_b V_b (p_b - p_a) L_a grad W_ab, exact for a linear
 /// pressure. Zero for the others.
 template <int Dim>
-void pressure_acceleration(const particles::SphParticles<Dim> &particles,
-                           const neighbors::NeighborList<Dim> &neighbors,
-                           const Kernel<Dim> &kernel,
-                           const neighbors::PeriodicBox<Dim> &box,
-                           const GradientCorrection<Dim> *correction,
-                           std::vector<core::Vec<Dim>> &out);
+void pressure_acceleration(const particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                           const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box,
+                           const GradientCorrection<Dim>* correction, std::vector<core::Vec<Dim>>& out);
 
 /// Assembles and solves the pressure system; reuses its storage from step to
 /// step.
-template <int Dim> class PressureProjection {
-public:
-  /// Solves for the pressure of the fluid and wall particles from the predicted
-  /// velocities `v_star` (walls: their own velocity) and writes it to the
-  /// particles' pressure; the previous pressure is the initial guess.
-  /// `free_surface` gets 1 for the surface particles.
-  ProjectionResult solve(particles::SphParticles<Dim> &particles,
-                         const neighbors::NeighborList<Dim> &neighbors,
-                         const Kernel<Dim> &kernel,
-                         const ProjectionSettings<Dim> &settings,
-                         const core::Vec<Dim> *v_star,
-                         const GradientCorrection<Dim> *correction, double dt,
-                         std::int32_t *free_surface);
+template <int Dim>
+class PressureProjection {
+  public:
+    /// Solves for the pressure of the fluid and wall particles from the predicted
+    /// velocities `v_star` (walls: their own velocity) and writes it to the
+    /// particles' pressure; the previous pressure is the initial guess.
+    /// `free_surface` gets 1 for the surface particles.
+    ProjectionResult solve(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                           const Kernel<Dim>& kernel, const ProjectionSettings<Dim>& settings,
+                           const core::Vec<Dim>* v_star, const GradientCorrection<Dim>* correction, double dt,
+                           std::int32_t* free_surface);
 
-  /// The system of the last solve (tests).
-  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> &matrix() const {
-    return matrix_;
-  }
+    /// The system of the last solve (tests).
+    const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& matrix() const { return matrix_; }
 
-private:
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> matrix_;
-  Eigen::VectorXd rhs_, guess_, solution_;
-  std::vector<Index> row_count_, row_start_;
-  std::vector<int> padded_columns_;
-  std::vector<double> padded_values_;
-  std::vector<double> divergence_r_, divergence_v_, summation_density_;
-  std::vector<core::Vec<Dim>> normal_;
+  private:
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> matrix_;
+    Eigen::VectorXd rhs_, guess_, solution_;
+    std::vector<Index> row_count_, row_start_;
+    std::vector<int> padded_columns_;
+    std::vector<double> padded_values_;
+    std::vector<double> divergence_r_, divergence_v_, summation_density_;
+    std::vector<core::Vec<Dim>> normal_;
 };
 
 extern template class PressureProjection<2>;
 extern template class PressureProjection<3>;
 
-} // namespace grit::sph
+}  // namespace grit::sph

@@ -17,21 +17,12 @@ namespace grit::sph {
 /// The Shepard density of every fluid particle (others keep theirs) into `out`;
 /// a gather loop.
 template <int Dim>
-void shepard_density(const particles::SphParticles<Dim> &particles,
-                     const neighbors::NeighborList<Dim> &neighbors,
-                     const Kernel<Dim> &kernel,
-                     const neighbors::PeriodicBox<Dim> &box,
-                     std::vector<double> &out);
+void shepard_density(const particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
+                     const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box, std::vector<double>& out);
 
-extern template void shepard_density<2>(const particles::SphParticles<2> &,
-                                        const neighbors::NeighborList<2> &,
-                                        const Kernel<2> &,
-                                        const neighbors::PeriodicBox<2> &,
-                                        std::vector<double> &);
-extern template void shepard_density<3>(const particles::SphParticles<3> &,
-                                        const neighbors::NeighborList<3> &,
-                                        const Kernel<3> &,
-                                        const neighbors::PeriodicBox<3> &,
-                                        std::vector<double> &);
+extern template void shepard_density<2>(const particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
+                                        const Kernel<2>&, const neighbors::PeriodicBox<2>&, std::vector<double>&);
+extern template void shepard_density<3>(const particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
+                                        const Kernel<3>&, const neighbors::PeriodicBox<3>&, std::vector<double>&);
 
-} // namespace grit::sph
+}  // namespace grit::sph
