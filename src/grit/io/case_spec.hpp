@@ -184,7 +184,7 @@ struct CaseSpec {
     double artificial_stress = 0.3;      ///< numerics.artificial_stress: epsilon of Gray et al. (2001)
     /// numerics.kernel_correction: the fluid sums use the corrected kernel gradient L_a grad W_ab of
     /// the second seed paper eq. (8) (Bonet & Lok 1999), exact for linear fields whatever the disorder.
-    bool kernel_correction = false;
+    bool kernel_correction = false;  ///< default true under fluid.solver = "isph"
     /// numerics.shepard_interval [steps]: every so many steps the fluid density is reset to its Shepard
     /// average sum m W / sum (m/rho) W (0: never).
     int shepard_interval = 0;
@@ -203,11 +203,13 @@ struct CaseSpec {
         double tolerance = 1e-6;       ///< isph.tolerance: relative residual |b - Ax| / |b| of the solve
         int max_iterations = 2000;     ///< isph.max_iterations: more is a failed solve (an error)
         /// isph.free_surface_divergence: a fluid particle whose div r = -sum V_b x_ab . grad W_ab is below
-        /// this is on the free surface (p there is a Dirichlet value); 0: 1.5 in 2D, 2.4 in 3D (Lee et al. 2008)
+        /// this is on the free surface (p = 0 there); 0: 1.5 in 2D, 2.4 in 3D (Lee et al. 2008)
         double free_surface_divergence = 0.0;
-        /// isph.density_relaxation: gamma of the density-invariance term gamma (rho0 - rho)/(rho dt^2)
+        /// isph.density_relaxation: gamma of the density-invariance term gamma (rho0 - rho)/(rho tau^2)
         /// added to the divergence source (Asai et al. 2012); 0: the divergence-free projection alone
-        double density_relaxation = 0.02;
+        double density_relaxation = 0.1;
+        /// isph.shifting: A of the particle shift D = A h |v| dt (Lind et al. 2012); 0: no shifting
+        double shifting = 2.0;
     } isph;
 
     std::vector<double> domain_min, domain_max;  ///< domain.min, domain.max [m]

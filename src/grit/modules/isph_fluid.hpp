@@ -10,6 +10,7 @@
 
 #include "grit/sim/module.hpp"
 #include "grit/sph/fluid_rates.hpp"
+#include "grit/sph/particle_shifting.hpp"
 #include "grit/sph/pressure_poisson.hpp"
 
 namespace grit::modules {
@@ -39,15 +40,18 @@ class IsphModule final : public sim::Module<Dim> {
     sph::FluidRateParameters<Dim> viscous_;  ///< the fluid sums without pressure: gravity and viscosity
     sph::ProjectionSettings<Dim> projection_settings_;
     sph::PressureProjection<Dim> projection_;
+    sph::ShiftingSettings<Dim> shifting_;
     sph::SphWorkspace workspace_;
     std::vector<sph::GradientCorrection<Dim>> correction_;  ///< L_a (numerics.kernel_correction), else empty
-    std::vector<core::Vec<Dim>> v_star_, pressure_acc_;
+    std::vector<core::Vec<Dim>> v_star_, pressure_acc_, shift_;
     std::vector<double> av_limit_;  ///< per material: 0.125 h^2 / nu of its
                                     ///< artificial viscosity [s]
     sph::ProjectionResult last_;
     long solves_ = 0;
     double iterations_total_ = 0.0;
     std::string failure_;
+    /// The step the limits allowed at the last check (a step cut to land on an output time is shorter) [s]
+    mutable double nominal_dt_ = 0.0;
 };
 
 extern template class IsphModule<2>;

@@ -27,6 +27,16 @@ struct GradientCorrection {
             c.m[i][i] = 1.0;
         return c;
     }
+    /// det L_a = 1 / det M_a: 1 for a full kernel, large where the neighbours fill little of it.
+    double determinant() const noexcept {
+        if constexpr (Dim == 2) {
+            return m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        } else {
+            return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        }
+    }
     core::Vec<Dim> apply(const core::Vec<Dim>& g) const noexcept {
         core::Vec<Dim> out = core::Vec<Dim>::zero();
         for (int i = 0; i < Dim; ++i)

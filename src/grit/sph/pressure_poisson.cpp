@@ -36,12 +36,10 @@ void dispatch(const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box,
 template <int Dim>
 void position_divergence(const particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl,
                          const Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box,
-                         std::vector<double>& divergence, std::vector<core::Vec<Dim>>& inward_normal,
-                         std::vector<double>& summation_density) {
+                         std::vector<double>& divergence, std::vector<double>& summation_density) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     divergence.assign(static_cast<std::size_t>(n), 0.0);
-    inward_normal.assign(static_cast<std::size_t>(n), Vec::zero());
     summation_density.assign(static_cast<std::size_t>(n), 0.0);
     const Vec* x = ps.position();
     const double* rho = ps.density();
@@ -52,7 +50,6 @@ void position_divergence(const particles::SphParticles<Dim>& ps, const neighbors
         parallel::for_each(n, [&](Index a) {
             if (ph[a] != fluid_phase) return;
             double div = 0.0, mass_sum = m[a] * k.value(0.0);
-            Vec grad_colour = Vec::zero();
             for (Index e = nl.begin(a); e < nl.end(a); ++e) {
                 const Index b = nbr[e];
                 if (!in_projection(ph[b])) continue;
@@ -60,13 +57,10 @@ void position_divergence(const particles::SphParticles<Dim>& ps, const neighbors
                 const double r = std::sqrt(core::norm2(xab));
                 const double vf = m[b] / rho[b] * k.gradient_factor(r);
                 div -= vf * r * r;
-                grad_colour += xab * vf;
                 mass_sum += m[b] * k.value(r);
             }
             divergence[static_cast<std::size_t>(a)] = div;
             summation_density[static_cast<std::size_t>(a)] = mass_sum;
-            const double g = core::norm(grad_colour);
-            if (g > 0.0) inward_normal[static_cast<std::size_t>(a)] = grad_colour * (1.0 / g);
         });
     });
 }
@@ -89,7 +83,7 @@ void velocity_divergence(const particles::SphParticles<Dim>& ps, const neighbors
             double sum = 0.0;
             for (Index e = nl.begin(a); e < nl.end(a); ++e) {
                 const Index b = nbr[e];
-                if (ph[b] != fluid_phase) continue;
+                if (!in_projection(ph[b])) continue;
                 const Vec xab = image(x[a] - x[b]);
                 const Vec grad =
                     (correction ? correction[a].apply(xab) : xab) * k.gradient_factor(std::sqrt(core::norm2(xab)));
@@ -117,18 +111,14 @@ void pressure_acceleration(const particles::SphParticles<Dim>& ps, const neighbo
         parallel::for_each_dynamic(n, [&](Index a) {
             if (ph[a] != fluid_phase) return;
             Vec sum = Vec::zero();
-            const double pa_term = p[a] / (rho[a] * rho[a]);
             for (Index e = nl.begin(a); e < nl.end(a); ++e) {
                 const Index b = nbr[e];
                 if (!in_projection(ph[b])) continue;
                 const Vec xab = image(x[a] - x[b]);
-                const double f = k.gradient_factor(std::sqrt(core::norm2(xab)));
-                if (correction)  // difference form, exact for a linear p: grad p = sum
-                                 // V_b (p_b - p_a) L grad W
-                    sum += correction[a].apply(xab) * (m[b] / rho[b] * (p[b] - p[a]) * f / rho[a]);
-                else  // symmetric form of eq. (23): conserves momentum
-                    sum += xab * (m[b] * (pa_term + p[b] / (rho[b] * rho[b])) * f);
+                const double f = m[b] / rho[b] * (p[b] - p[a]) * k.gradient_factor(std::sqrt(core::norm2(xab)));
+                sum += (correction ? correction[a].apply(xab) : xab) * f;
             }
+            sum *= 1.0 / rho[a];
             out[static_cast<std::size_t>(a)] = -sum;
         });
     });
@@ -139,12 +129,13 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                                                 const neighbors::NeighborList<Dim>& nl, const Kernel<Dim>& kernel,
                                                 const ProjectionSettings<Dim>& s, const core::Vec<Dim>* v_star,
                                                 const GradientCorrection<Dim>* correction, double dt,
-                                                std::int32_t* free_surface) {
+                                                double relaxation_time, std::int32_t* free_surface) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const auto un = static_cast<std::size_t>(n);
-    position_divergence(ps, nl, kernel, s.periodic_box, divergence_r_, normal_, summation_density_);
+    position_divergence(ps, nl, kernel, s.periodic_box, divergence_r_, summation_density_);
     velocity_divergence(ps, nl, kernel, s.periodic_box, v_star, correction, divergence_v_);
+    velocity_divergence(ps, nl, kernel, s.periodic_box, ps.velocity(), correction, divergence_v0_);
 
     const Vec* x = ps.position();
     const double* rho = ps.density();
@@ -164,7 +155,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     rhs_.resize(n);
     guess_.resize(n);
     const double inv_dt = 1.0 / dt;
-    const double relaxation = s.density_relaxation * inv_dt * inv_dt;
+    const double relaxation = s.density_relaxation / (relaxation_time * relaxation_time);
 
     dispatch(kernel, s.periodic_box, [&](const auto& k, const auto image) {
         const double support2 = k.support() * k.support();
@@ -193,32 +184,31 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     ++count;
                 }
                 if (divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence) {
-                    // Free surface: p = p_D, the hydrostatic pressure half a spacing (the
-                    // depth of the particle's centre) below the surface along its inward
-                    // normal: max(0, delta rho n_in . g). p = 0 there put the surface
-                    // half a spacing low: 6.7 % at the tank's shallowest probe.
+                    // Free surface: p = 0 (Cummins & Rudman 1999; Lind et al. 2012). The
+                    // hydrostatic value half a spacing deep tried before put the tank's shallowest
+                    // probe 5 % high once the walls were in the divergence (docs/validation.md).
                     if (free_surface) free_surface[a] = 1;
                     count = 1;
-                    if (!(diagonal > 0.0)) diagonal = 1.0;
-                    const Vec& normal = normal_[static_cast<std::size_t>(a)];
-                    const double pd = s.surface_depth * rho[a] * core::dot(normal, s.gravity);
-                    b = diagonal * std::max(pd, 0.0);
+                    diagonal = 1.0;
+                    b = 0.0;
                 } else {
-                    // -(div v*/dt + gamma (rho0 - rho_s)/(rho_s dt^2)), rho_s = sum_b m_b
-                    // W_ab where the kernel is full (div r >= 0.95 D): near the surface
-                    // the sum is short of rho0 by truncation, not by compression.
+                    // -(div v^n/tau + (div v* - div v^n)/dt + gamma (rho0 - rho_s)/(rho_s tau^2)),
+                    // tau the relaxation time (>= dt), rho_s = sum_b m_b W_ab where the kernel is
+                    // full (div r >= 0.95 D): near the surface the sum is short of rho0 by
+                    // truncation, not by compression.
                     const auto ia = static_cast<std::size_t>(a);
                     const double rho0 = s.reference_density[static_cast<std::size_t>(mat[a])];
                     const double rho_s = summation_density_[ia];
                     const double invariance =
                         divergence_r_[ia] >= full_kernel_divergence * Dim ? (rho0 - rho_s) / rho_s : 0.0;
-                    b = -(divergence_v_[ia] * inv_dt + relaxation * invariance);
+                    const double carried = divergence_v0_[ia];
+                    b = -(carried / relaxation_time + (divergence_v_[ia] - carried) * inv_dt + relaxation * invariance);
                 }
             } else if (ph[a] == wall_phase) {
-                // The wall's pressure makes the corrected fluid velocity the wall's
-                // along x_wf: p_w - p_f = rho_f (v*_f - v_w) . x_wf / dt, averaged over
-                // the fluid neighbours with weights W_wf (Adami et al. 2012, whose g -
-                // a_w is (v*_f - v_w)/dt for fluid at rest).
+                // p_w = sum_f W_wf (p_f + rho_f g . x_wf) / sum_f W_wf (Adami et al. 2012;
+                // the walls are fixed), an unknown of the same system. Not (v*_f - v_w)/dt in
+                // place of g: that sucked fluid leaving a wall back onto it (a layer climbed the
+                // dam break's left wall) and drove the pressure to 60 kPa.
                 for (Index e = nl.begin(a); e < nl.end(a); ++e) {
                     const Index j = nbr[e];
                     if (ph[j] != fluid_phase) continue;
@@ -227,7 +217,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     if (r2 >= support2) continue;
                     const double w = k.value(std::sqrt(r2));
                     diagonal += w;
-                    b += rho[j] * core::dot(v_star[j] - v_star[a], xwf) * inv_dt * w;
+                    b += rho[j] * core::dot(s.gravity, xwf) * w;
                     col[count] = static_cast<int>(j);
                     val[count] = -w;
                     ++count;
@@ -240,6 +230,15 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                 diagonal = 1.0;  // not in the projection: keeps its pressure
                 b = p[a];
             }
+            // Every row divided by its diagonal: the residual is then in pascals in every row. The
+            // wall rows (weights W ~ 1/h^2) otherwise outweighed the fluid rows (m/rho^2 |grad W|/r
+            // ~ 1e-3 of them) in |b - A p|, and the fluid's smooth pressure mode drifted by a
+            // kilopascal inside the tolerance.
+            const double inv_diagonal = 1.0 / diagonal;
+            for (Index c = 1; c < count; ++c)
+                val[c] *= inv_diagonal;
+            b *= inv_diagonal;
+            diagonal = 1.0;
             col[0] = static_cast<int>(a);
             val[0] = diagonal;
             rhs_[a] = b;
@@ -304,10 +303,10 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
 
 template void position_divergence<2>(const particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
                                      const Kernel<2>&, const neighbors::PeriodicBox<2>&, std::vector<double>&,
-                                     std::vector<core::Vec<2>>&, std::vector<double>&);
+                                     std::vector<double>&);
 template void position_divergence<3>(const particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
                                      const Kernel<3>&, const neighbors::PeriodicBox<3>&, std::vector<double>&,
-                                     std::vector<core::Vec<3>>&, std::vector<double>&);
+                                     std::vector<double>&);
 template void velocity_divergence<2>(const particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
                                      const Kernel<2>&, const neighbors::PeriodicBox<2>&, const core::Vec<2>*,
                                      const GradientCorrection<2>*, std::vector<double>&);
