@@ -6,31 +6,15 @@
 #include <sstream>
 
 #include "support/case_fixture.hpp"
+#include "support/martin_moyce.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
 
 namespace {
 
-struct FrontPoint {
-    double T, Z;
-};
-
-std::vector<FrontPoint> martin_moyce() {
-    std::ifstream in(std::filesystem::path(GRIT_SOURCE_DIR) / "cases/dambreak_2d/reference/martin_moyce_1952.csv");
-    std::vector<FrontPoint> out;
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#' || line[0] == 'c') continue;
-        std::stringstream ss(line);
-        std::string a, T, Z;
-        std::getline(ss, a, ',');
-        std::getline(ss, T, ',');
-        std::getline(ss, Z, ',');
-        out.push_back({std::stod(T), std::stod(Z)});
-    }
-    return out;
-}
+using grit::testing::FrontPoint;
+using grit::testing::martin_moyce;
 
 constexpr double L = 0.2, g = 9.81;
 

@@ -5,11 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "grit/core/error.hpp"
 #include "support/case_fixture.hpp"
+#include "support/martin_moyce.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
@@ -76,25 +75,14 @@ TEST(Isph, HydrostaticTankPressure) {
 // As DamBreak.Front2DAgainstMartinMoyce (test_dambreak.cpp) with the incompressible solver: Z = z/L
 // within 10 % of the data for 1.5 <= T <= 2.5 (issue 14's figure), dx 5 mm.
 TEST(Isph, DamBreakFrontAgainstMartinMoyce) {
-    std::ifstream in(std::filesystem::path(GRIT_SOURCE_DIR) / "cases/dambreak_2d/reference/martin_moyce_1952.csv");
-    std::vector<std::pair<double, double>> data;  // (T, Z)
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#' || line[0] == 'c') continue;
-        std::stringstream ss(line);
-        std::string a, T, Z;
-        std::getline(ss, a, ',');
-        std::getline(ss, T, ',');
-        std::getline(ss, Z, ',');
-        data.emplace_back(std::stod(T), std::stod(Z));
-    }
-    std::sort(data.begin(), data.end());
+    auto data = grit::testing::martin_moyce();
+    std::sort(data.begin(), data.end(), [](auto l, auto r) { return l.T < r.T; });
     ASSERT_GE(data.size(), 8u);
     const double L = 0.2, scale = std::sqrt(2.0 * g / L);
     grit::sim::Simulation<2> sim(
         load_case("dambreak_2d/case.toml", {"fluid.solver=isph", "numerics.particle_spacing=0.005"}), in_memory());
     int checked = 0;
-    for (const auto& [T, Z_exp] : data) {
+    for (const auto& [T, Z_exp] : data) {  // FrontPoint {T, Z}
         if (T < 1.5 || T > 2.5) continue;
         sim.advance_to(T / scale);
         const double Z = sim.probe("front") / L;
