@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   libhdf5-dev hdf5-tools
   python3 python3-numpy python3-matplotlib python3-vtk9
+  liggghts-doc  # the STL chute of LIGGGHTS' chute_wear tutorial (cases/chute_wear_3d); 12 MB, no binaries
 )
 
 missing=()

@@ -207,6 +207,18 @@ expect_input_error "spacing larger than the geometry" "fluid[0].max" "less than 
 expect_input_error "negative --end-time" "--end-time" "must not be negative" -- run "$HYDRO" --end-time -1
 expect_input_error "--set without '='" "--set 'time.end'" "key.path=value" -- run "$HYDRO" --set time.end
 
+# STL mesh walls: a file that cannot be trusted is refused with its name and the problem.
+WEAR=$ROOT/cases/wear_angle_sweep_3d/case.toml
+expect_input_error "missing STL file" "no_such.stl" "no such file" -- run "$WEAR" --set 'mesh[0].file=no_such.stl'
+: >"$W/empty.stl"
+expect_input_error "empty STL file" "$W/empty.stl" "empty" -- run "$WEAR" --set "mesh[0].file=$W/empty.stl"
+printf 'solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 2 0 0\nendloop\nendfacet\nendsolid\n' \
+    >"$W/flat.stl"
+expect_input_error "degenerate STL facet" "$W/flat.stl" "facet 1 is degenerate" -- run "$WEAR" --set "mesh[0].file=$W/flat.stl"
+expect_input_error "open STL where it must be watertight" "plate.stl" "16 open edges" "watertight" -- \
+    run "$WEAR" --set 'mesh[0].watertight=true'
+expect_input_error "unknown wear model" "mesh[0].wear_model" "archard" -- run "$WEAR" --set 'mesh[0].wear_model=archard'
+
 # Too many particles: refused before anything is allocated (it used to end in std::bad_alloc, exit 1).
 DAM=$ROOT/cases/dambreak_2d/case.toml
 expect_input_error "spacing 1e-12: too many particles" "numerics.particle_spacing = 1e-12 m" "particles (~" \

@@ -7,6 +7,7 @@
 
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/io/case_reader.hpp"
+#include "grit/mesh/stl_file.hpp"
 #include "grit/sim/simulation.hpp"
 
 namespace grit::testing {
@@ -31,6 +32,30 @@ io::CaseSpec free_blob_case(std::vector<std::string> overrides) {
     spec.fluids[0].shape.radius = 0.06;
     spec.domain_min.assign(Dim, -1.0);
     spec.domain_max.assign(Dim, 1.0);
+    return spec;
+}
+
+/// dem_settling_3d with three layers of grains and its floor plane replaced by the STL plate of
+/// cases/wear_angle_sweep_3d, scaled to cover the periodic box, booking `wear_model` wear: a bed settling
+/// on a mesh wall, with mesh contacts and their tangential histories throughout.
+inline io::CaseSpec settling_on_mesh_case(const std::string& wear_model, std::vector<std::string> overrides = {}) {
+    overrides.push_back("grains[0].max=[0.099, 0.099, 0.01]");
+    auto spec = load_case("dem_settling_3d/case.toml", overrides);
+    spec.grain_walls.clear();
+    io::MeshSpec m;
+    m.key = "mesh[0]";
+    m.name = "floor";
+    m.file = std::filesystem::path(GRIT_SOURCE_DIR) / "cases" / "wear_angle_sweep_3d" / "plate.stl";
+    mesh::Placement place;
+    place.scale = 5.0;  // [-0.1, 0.1]^2
+    place.translate = core::Vec<3>{{0.05, 0.05, 0.0}};
+    m.mesh = std::make_shared<const mesh::TriangleMesh>(
+        mesh::TriangleMesh::from_facets(mesh::read_stl(m.file), place, m.file.string(), false));
+    m.material = 0;
+    m.wear_model = *wear::wear_model_named(wear_model);
+    m.wear_material = *wear::find_wear_material("steel");
+    m.velocity = m.angular_velocity = m.centre = {0.0, 0.0, 0.0};
+    spec.meshes.push_back(std::move(m));
     return spec;
 }
 

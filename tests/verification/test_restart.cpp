@@ -152,6 +152,39 @@ TEST(Restart, SettlingGrainsWithContactHistoryContinueBitForBit) {
     });
 }
 
+// Grains settling on an STL mesh floor: mesh contacts with their tangential histories (grain fields) and
+// the per-triangle wear map (LIGGGHTS' form, booked at every contact step) across the checkpoint.
+TEST(Restart, GrainsOnAMeshWallWithWearContinueBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::settling_on_mesh_case("finnie_liggghts", {"time.end=0.03"});
+    check_restart<3>(spec, 0.02, 0.022, false, [](Simulation<3>& s) {
+        const auto* walls = s.grains()->meshes();
+        int touching = 0;
+        for (grit::Index i = 0; i < s.grains()->grains().size(); ++i) touching += walls->contact_count(i) > 0;
+        EXPECT_GT(touching, 500) << "the bed does not rest on the mesh at the checkpoint";
+        for (const auto& v : s.output_values()) {
+            if (v.name == "wear_mass_floor") {
+                EXPECT_GT(v.value, 0.0);
+            }
+        }
+    });
+}
+
+// Grains poured onto the chute: the feed's insertions (their draws keyed by insertion, the mass carried
+// between them) and the chute's wear map across the checkpoint, with insertions after it.
+TEST(Restart, PouredGrainsOnTheChuteContinueBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case("chute_wear_3d/case.toml", {"time.end=0.15"});
+    check_restart<3>(spec, 0.105, 0.135, false, [](Simulation<3>& s) {
+        EXPECT_GT(s.grains()->grains().size(), 100);
+        for (const auto& v : s.output_values()) {
+            if (v.name == "wear_mass_chute") {
+                EXPECT_GT(v.value, 0.0);
+            }
+        }
+    });
+}
+
 // The periodic channel with the fluid moving fast along the periodic axis: particles have crossed the
 // periodic face and the lists have been rebuilt over the periodic grid before the checkpoint, and both
 // go on after it (the lists are rebuilt on load from their reference positions, on the periodic grid).

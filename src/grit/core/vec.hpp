@@ -62,6 +62,11 @@ constexpr double norm2(const Vec<Dim>& a) noexcept { return dot(a, a); }
 template <int Dim>
 inline double norm(const Vec<Dim>& a) noexcept { return std::sqrt(norm2(a)); }
 
+/// a x b (3D).
+constexpr Vec<3> cross(const Vec<3>& a, const Vec<3>& b) noexcept {
+    return {{a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[2] * b.c[0] - a.c[0] * b.c[2], a.c[0] * b.c[1] - a.c[1] * b.c[0]}};
+}
+
 template <int Dim>
 constexpr bool all_finite(const Vec<Dim>& a) noexcept {
     for (int k = 0; k < Dim; ++k)

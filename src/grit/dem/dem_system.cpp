@@ -64,6 +64,20 @@ void DemSystem<Dim>::add_wall(const PlaneWall<Dim>& wall) {
 }
 
 template <int Dim>
+void DemSystem<Dim>::add_mesh(MeshWall wall) {
+    if constexpr (Dim != 3) {
+        throw core::InputError("mesh walls need a 3D case (simulation.dimension = 3)");
+    } else {
+        if (wall.material < 0 || wall.material >= static_cast<std::int32_t>(materials_.size()))
+            throw core::InputError("mesh wall '" + wall.name + "': material index " + std::to_string(wall.material) +
+                                   " out of range");
+        if (!meshes_) meshes_ = std::make_unique<MeshWalls>();
+        meshes_->add(std::move(wall), grains_);
+        forces_ready_ = false;
+    }
+}
+
+template <int Dim>
 void DemSystem<Dim>::gather(const std::vector<Index>& source) {
     if (!history_saved_) history_.save(grains_.id(), grains_.size(), list_);
     history_saved_ = true;
@@ -124,13 +138,21 @@ void DemSystem<Dim>::kick_drift(double dt) {
 }
 
 template <int Dim>
-void DemSystem<Dim>::force_stage(double dt, double half_kick) {
+void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
     std::vector<Vec*> wall_history;
     for (std::size_t s = 0; s < walls_.size(); ++s)
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
             grain_pair_pass<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+            if constexpr (Dim == 3) {
+                if (meshes_) {
+                    meshes_->place(time);
+                    meshes_->contact_pass(grains_, pair_table_, law, dt);
+                }
+            } else {
+                (void)time;
+            }
             finish_grain_forces<Dim>(grains_, list_, scratch_, parameters_.gravity, walls_, wall_history,
                                      pair_table_, law, dt, half_kick);
         },
@@ -141,7 +163,7 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick) {
 template <int Dim>
 void DemSystem<Dim>::compute_forces(double dt) {
     update_neighbors();
-    force_stage(dt, 0.0);
+    force_stage(dt, 0.0, time_);
 }
 
 template <int Dim>
@@ -150,7 +172,7 @@ void DemSystem<Dim>::begin_step(double dt) {
     // they are, so a repeated evaluation does not count their increment twice.
     if (!forces_ready_) compute_forces(0.0);
     kick_drift(dt);
-    force_stage(dt, 0.0);
+    force_stage(dt, 0.0, time_ + dt);
 }
 
 template <int Dim>
@@ -166,7 +188,7 @@ void DemSystem<Dim>::step(double dt) {
     // over the grains a step (kick and drift, pairs, completion and kick).
     if (!forces_ready_) compute_forces(0.0);
     kick_drift(dt);
-    force_stage(dt, 0.5 * dt);
+    force_stage(dt, 0.5 * dt, time_ + dt);
     time_ += dt;
     ++counters_.steps;
 }

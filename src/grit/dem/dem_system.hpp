@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "grit/dem/grain_material.hpp"
 #include "grit/dem/grain_neighbors.hpp"
 #include "grit/dem/grain_set.hpp"
+#include "grit/dem/mesh_walls.hpp"
 #include "grit/dem/plane_wall.hpp"
 
 namespace grit::dem {
@@ -65,6 +67,10 @@ public:
     Index inject_grain(const Vec& x, double radius, std::int32_t material, const Vec& v);
     /// Adds a plane wall; its history field `wall_history_<k>` joins the grain registry.
     void add_wall(const PlaneWall<Dim>& wall);
+    /// Adds a triangle-mesh wall (3D only; InputError in 2D or for a material index out of range).
+    void add_mesh(MeshWall wall);
+    /// The mesh walls; null when there are none.
+    const MeshWalls* meshes() const noexcept { return meshes_.get(); }
     /// Reorders/removes grains (new[i] = old[source[i]]); contact history follows by id.
     void gather(const std::vector<Index>& source);
 
@@ -106,7 +112,8 @@ private:
     /// First half kick and drift, then fresh lists if a grain has moved more than skin/2.
     void kick_drift(double dt);
     /// Contact, weight and wall forces at the current lists; with half_kick != 0 the second half kick.
-    void force_stage(double dt, double half_kick);
+    /// `time`: the time of the grains' positions (where moving meshes are placed).
+    void force_stage(double dt, double half_kick, double time);
     void rebuild_neighbors();
     double skin() const;
 
@@ -116,6 +123,7 @@ private:
     ContactLaw law_;
     GrainSet<Dim> grains_;
     std::vector<PlaneWall<Dim>> walls_;
+    std::unique_ptr<MeshWalls> meshes_;
     GrainNeighborList<Dim> list_;
     ContactHistory<Dim> history_;
     PairScratch<Dim> scratch_;

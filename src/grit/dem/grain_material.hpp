@@ -27,8 +27,16 @@ struct GrainMaterial {
 /// nu 0.3, mu 0.3, e 0.6.
 inline GrainMaterial garnet() { return {"garnet", 4120.0, 248e9, 0.3, 0.3, 0.6, 0.2e-3}; }
 
+/// Wall materials for grain contact (mesh walls, plane walls): carbon steel and aluminium with handbook
+/// elastic constants; friction and restitution of quartz sand on them (order of the values measured for
+/// sand on steel plates, e ~ 0.5-0.7, mu ~ 0.3-0.5).
+inline GrainMaterial steel() { return {"steel", 7850.0, 210e9, 0.3, 0.4, 0.6, 0.0}; }
+inline GrainMaterial aluminium() { return {"aluminium", 2700.0, 69e9, 0.33, 0.4, 0.6, 0.0}; }
+/// Quartz sand (SiO2): rho 2650 kg/m^3, E 70 GPa, nu 0.17 (the second paper's loading is "coarse sand").
+inline GrainMaterial sand() { return {"sand", 2650.0, 70e9, 0.17, 0.4, 0.6, 0.5e-3}; }
+
 /// The built-in grain materials.
-inline std::vector<GrainMaterial> grain_material_library() { return {garnet()}; }
+inline std::vector<GrainMaterial> grain_material_library() { return {garnet(), sand(), steel(), aluminium()}; }
 
 /// The built-in grain material called `name`, if any.
 inline std::optional<GrainMaterial> find_grain_material(std::string_view name) {

@@ -19,6 +19,7 @@
 #include "grit/io/jet_builder.hpp"
 #include "grit/io/particle_budget.hpp"
 #include "grit/material/library.hpp"
+#include "grit/mesh/stl_file.hpp"
 #include "grit/sph/kernels.hpp"
 
 namespace grit::io {
@@ -160,6 +161,20 @@ public:
             const double v = e.value<double>().value();
             if (!std::isfinite(v)) fail(key, "must hold finite numbers");
             out.push_back(v);
+        }
+        return out;
+    }
+    /// A non-empty array of finite numbers of any length.
+    std::vector<double> numbers(std::string_view key, const char* unit) const {
+        const toml::node* n = take(key);
+        if (!n) fail(key, fmt::format("is required (an array of numbers {})", unit));
+        const toml::array* a = n->as_array();
+        if (!a || a->empty()) fail(key, fmt::format("must be a non-empty array of numbers {}", unit));
+        std::vector<double> out;
+        for (const auto& e : *a) {
+            if (!e.is_number() || !std::isfinite(e.value<double>().value()))
+                fail(key, fmt::format("must be an array of finite numbers {}", unit));
+            out.push_back(e.value<double>().value());
         }
         return out;
     }
@@ -590,6 +605,102 @@ private:
     std::vector<dem::GrainMaterial>& used_;
 };
 
+/// A wear material: [wear_materials.<name>] (its keys on top of the built-in material `based_on`, if
+/// given), else the built-in one of that name.
+wear::WearMaterial read_wear_material(const Section& top, const Section& s, std::string_view key, const std::string& name) {
+    const Section defined = top.section("wear_materials");
+    if (!defined.has(name)) {
+        if (auto m = wear::find_wear_material(name)) return *m;
+        std::string known;
+        for (const auto& l : wear::wear_material_library()) known += (known.empty() ? "" : ", ") + l.name;
+        s.fail(key, "is neither a [wear_materials] entry of the case nor a built-in wear material (" + known + ")");
+    }
+    const Section d = defined.section(name);
+    wear::WearMaterial m;
+    if (d.has("based_on")) {
+        const std::string base = d.text("based_on");
+        auto b = wear::find_wear_material(base);
+        if (!b) d.fail("based_on", "is not a built-in wear material (grit materials lists them)");
+        m = *b;
+    }
+    m.name = name;
+    m.density = d.number_or("density", m.density, positive("[kg/m^3]"));
+    m.youngs_modulus = d.number_or("youngs_modulus", m.youngs_modulus, positive("[Pa]"));
+    m.poisson_ratio = d.number_or("poisson_ratio", m.poisson_ratio, in_range(0.0, 0.4999));
+    m.flow_stress = d.number_or("flow_stress", m.flow_stress, positive("[Pa]"));
+    m.elastic_limit = d.number_or("elastic_limit", m.elastic_limit, positive("[Pa]"));
+    m.vickers_hardness = d.number_or("vickers_hardness", m.vickers_hardness, positive("[GPa]"));
+    m.finnie_k = d.number_or("finnie_k", m.finnie_k, positive("[-]"));
+    m.finnie_psi = d.number_or("finnie_psi", m.finnie_psi, positive("[-]"));
+    m.bitter_exponent = d.number_or("bitter_exponent", m.bitter_exponent, in_range(1.0, 4.0));
+    m.bitter_roundness = d.number_or("bitter_roundness", m.bitter_roundness, in_range(1e-3, 1.0));
+    m.bitter_deformation_factor = d.number_or("bitter_deformation_factor", m.bitter_deformation_factor, positive("[J/m^3]"));
+    m.oka_K = d.number_or("oka_K", m.oka_K, positive("[mm^3/kg]"));
+    m.oka_k1 = d.number_or("oka_k1", m.oka_k1);
+    m.oka_k3 = d.number_or("oka_k3", m.oka_k3);
+    m.oka_reference_speed = d.number_or("oka_reference_speed", m.oka_reference_speed, positive("[m/s]"));
+    m.oka_reference_diameter = d.number_or("oka_reference_diameter", m.oka_reference_diameter, positive("[m]"));
+    m.liggghts_k = d.number_or("liggghts_k", m.liggghts_k, positive("[s^2/m^2]"));
+    return m;
+}
+
+/// [[mesh]]: STL walls for grains (3D), their placement, motion and wear model.
+void read_meshes(const Section& top, CaseSpec& c, GrainMaterialTable& grain_table) {
+    const auto sections = top.sections("mesh");
+    if (sections.empty()) return;
+    if (c.dimension != 3) throw InputError("key 'mesh': mesh walls need a 3D case (simulation.dimension = 3)");
+    if (!c.has_grains()) throw InputError("key 'mesh': mesh walls act on grains for now; the case has no [[grains]] or [abrasive]");
+    const std::filesystem::path folder = c.source.parent_path();
+    for (const Section& m : sections) {
+        MeshSpec spec;
+        spec.key = m.path();
+        spec.name = m.text_or("name", fmt::format("mesh{}", c.meshes.size()));
+        if (spec.name.empty() || spec.name.find_first_of(", \t\"") != std::string::npos)
+            m.fail("name", "must be a non-empty name without commas, spaces or quotes");
+        for (const auto& other : c.meshes)
+            if (other.name == spec.name) m.fail("name", "is the name of another [[mesh]]");
+        const std::filesystem::path file = m.text("file");
+        spec.file = file.is_absolute() ? file : folder / file;
+        mesh::Placement placement;
+        placement.scale = m.number_or("scale", 1.0, positive("[-]"));
+        placement.rotate = core::to_vec<3>(m.vector_or("rotate", 3, "[deg]", {0.0, 0.0, 0.0}));
+        placement.translate = core::to_vec<3>(m.vector_or("translate", 3, "[m]", {0.0, 0.0, 0.0}));
+        const bool watertight = m.flag_or("watertight", false);
+        spec.mesh = std::make_shared<const mesh::TriangleMesh>(
+            mesh::TriangleMesh::from_facets(mesh::read_stl(spec.file), placement, spec.file.string(), watertight));
+        spec.material = m.has("material") ? grain_table.resolve(m, "material", m.text("material")) : c.first_grain_material();
+        const std::string model = m.choice("wear_model", "none", {"none", "finnie", "bitter", "oka", "finnie_liggghts"});
+        spec.wear_model = *wear::wear_model_named(model);
+        if (spec.wear_model != wear::WearModel::none) {
+            const std::string material_name = m.has("wear_material") ? m.text("wear_material")
+                                                                     : c.grain_materials[static_cast<std::size_t>(spec.material)].name;
+            spec.wear_material = read_wear_material(top, m, m.has("wear_material") ? "wear_material" : "material", material_name);
+            for (const std::string& k : wear::needed_keys(spec.wear_model)) {
+                const auto& w = spec.wear_material;
+                const double value = k == "density" ? w.density : k == "youngs_modulus" ? w.youngs_modulus
+                                   : k == "poisson_ratio" ? w.poisson_ratio : k == "flow_stress" ? w.flow_stress
+                                   : k == "elastic_limit" ? w.elastic_limit : k == "vickers_hardness" ? w.vickers_hardness
+                                                                            : w.bitter_deformation_factor;
+                if (!std::isfinite(value))
+                    throw InputError(fmt::format("key 'wear_materials.{}.{}': needed by {}.wear_model = \"{}\"; give it "
+                                                 "(or based_on = a built-in wear material)",
+                                                 w.name, k, spec.key, model));
+            }
+        }
+        spec.velocity = m.vector_or("velocity", 3, "[m/s]", {0.0, 0.0, 0.0});
+        spec.angular_velocity = m.vector_or("angular_velocity", 3, "[rad/s]", {0.0, 0.0, 0.0});
+        spec.centre = m.vector_or("centre", 3, "[m]", {0.0, 0.0, 0.0});
+        c.meshes.push_back(std::move(spec));
+    }
+    // Entries no mesh uses are still checked.
+    const Section defined = top.section("wear_materials");
+    for (const auto& name : defined.keys()) {
+        bool used = false;
+        for (const auto& spec : c.meshes) used |= spec.wear_model != wear::WearModel::none && spec.wear_material.name == name;
+        if (!used) read_wear_material(top, defined, name, name);
+    }
+}
+
 /// Grain diameters: `diameter` (all equal) or a [..size] table with `distribution` = "fixed",
 /// "uniform" (min, max) or "normal" (mean, deviation, min, max); else the material's nominal diameter.
 dem::SizeDistribution read_grain_size(const Section& s, const dem::GrainMaterial& material) {
@@ -597,8 +708,9 @@ dem::SizeDistribution read_grain_size(const Section& s, const dem::GrainMaterial
     dem::SizeDistribution out;
     if (s.has("size")) {
         const Section z = s.section("size");
-        const std::string kind = z.choice("distribution", "fixed", {"fixed", "uniform", "normal"});
+        const std::string kind = z.choice("distribution", "fixed", {"fixed", "uniform", "normal", "discrete"});
         if (kind == "fixed") out = dem::FixedSize{z.number("diameter", positive("[m]"))};
+        else if (kind == "discrete") out = dem::DiscreteSize{z.numbers("diameters", "[m]"), z.numbers("mass_fractions", "[-]")};
         else if (kind == "uniform") out = dem::UniformSize{z.number("min", positive("[m]")), z.number("max", positive("[m]"))};
         else out = dem::NormalSize{z.number("mean", positive("[m]")), z.number("deviation", non_negative("[m]")),
                                    z.number("min", positive("[m]")), z.number("max", positive("[m]"))};
@@ -1021,6 +1133,25 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.grains.push_back(std::move(b));
     }
     if (top.has("abrasive")) read_abrasive(top.section("abrasive"), c, grain_table);
+    for (const Section& f : top.sections("grain_feed")) {
+        GrainFeedSpec feed;
+        feed.key = f.path();
+        feed.material = grain_table.resolve(f, "material", f.text_or("material", "garnet"));
+        feed.size = read_grain_size(f, c.grain_materials[static_cast<std::size_t>(feed.material)]);
+        feed.min = f.vector("min", dim, "[m]");
+        feed.max = f.vector("max", dim, "[m]");
+        for (int k = 0; k < dim; ++k)
+            if (!(feed.max[static_cast<std::size_t>(k)] > feed.min[static_cast<std::size_t>(k)]))
+                f.fail("max", "must exceed min along every axis");
+        feed.velocity = f.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
+        feed.mass_flow_rate = f.number("mass_flow_rate", positive("[kg/s]"));
+        feed.interval = f.number("interval", positive("[s]"));
+        feed.start = f.number_or("start", 0.0, non_negative("[s]"));
+        feed.stop = f.number_or("stop", 1e300, positive("[s]"));
+        feed.count = f.integer_or("count", 0, 0, 100'000'000);
+        feed.seed = static_cast<std::uint64_t>(f.integer_or("seed", 1, 0, 2'000'000'000));
+        c.grain_feeds.push_back(std::move(feed));
+    }
     for (const Section& w : top.sections("grain_wall")) {
         if (!c.has_grains()) throw InputError("key 'grain_wall': grain walls need [[grains]] or [abrasive]");
         GrainWallSpec gw;
@@ -1037,6 +1168,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         gw.material = w.has("material") ? grain_table.resolve(w, "material", w.text("material")) : c.first_grain_material();
         c.grain_walls.push_back(std::move(gw));
     }
+    read_meshes(top, c, grain_table);
     std::optional<std::vector<bool>> dem_periodic;
     if (top.has("dem")) {
         const Section d = top.section("dem");
@@ -1078,8 +1210,9 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (!in_use) read_material(materials.section(name), name);
     }
 
-    if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty())
-        throw InputError("the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]], [jet] or [[grains]]");
+    if (c.fluids.empty() && c.inlets.empty() && c.solids.empty() && !c.has_grains())
+        throw InputError(
+            "the case has nothing that moves: add a [[fluid]], [[solid]], [[inlet]], [jet], [[grains]] or [[grain_feed]]");
     check_fluid_solver(c);
     if (c.shepard_interval > 0 && c.has_grains() && c.coupling.enabled && !c.fluids.empty())
         throw InputError(fmt::format("key 'numerics.shepard_interval' = {}: the Shepard filter acts on the particle "

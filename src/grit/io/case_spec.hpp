@@ -3,12 +3,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "grit/dem/grain_material.hpp"
 #include "grit/dem/size_distribution.hpp"
 #include "grit/material/material.hpp"
+#include "grit/mesh/triangle_mesh.hpp"
+#include "grit/wear/wear_models.hpp"
 
 namespace grit::io {
 
@@ -132,12 +135,38 @@ struct GrainBlockSpec {
     bool fixed = false;                  ///< grains held in place (a packed bed): never moved
 };
 
+/// A stream of grains poured in during the run ([[grain_feed]], LIGGGHTS' insert/stream).
+struct GrainFeedSpec {
+    std::string key;
+    int material = 0;                               ///< index into CaseSpec::grain_materials
+    dem::SizeDistribution size = dem::FixedSize{};  ///< diameters
+    std::vector<double> min, max;                   ///< the box the centres are placed in [m]
+    std::vector<double> velocity;                   ///< [m/s]
+    double mass_flow_rate = 0.0;                    ///< [kg/s] (kg/s per metre in 2D)
+    double interval = 0.0;                          ///< between insertions [s]
+    double start = 0.0, stop = 1e300;               ///< [s]
+    long count = 0;                                 ///< the most grains inserted (0: no limit)
+    std::uint64_t seed = 1;
+};
+
 /// A plane wall for grains: a point on it and the normal towards the grains.
 struct GrainWallSpec {
     std::string key;
     std::string name;  ///< target name in impacts.csv
     std::vector<double> point, normal;
     int material = 0;  ///< index into CaseSpec::grain_materials
+};
+
+/// A triangle-mesh wall ([[mesh]], 3D): read, checked and placed by the case reader.
+struct MeshSpec {
+    std::string key;
+    std::string name;                  ///< target name in impacts.csv, wear_mass_<name> in series.csv
+    std::filesystem::path file;        ///< the STL file (relative paths from the case file's folder)
+    std::shared_ptr<const mesh::TriangleMesh> mesh;
+    int material = 0;                  ///< contact material: index into CaseSpec::grain_materials
+    wear::WearModel wear_model = wear::WearModel::none;
+    wear::WearMaterial wear_material;  ///< the wall's wear material (wear_material, [wear_materials.<name>])
+    std::vector<double> velocity, angular_velocity, centre;  ///< prescribed motion [m/s], [rad/s], [m]
 };
 
 /// [dem]: grain contact law and coupling settings.
@@ -243,6 +272,8 @@ struct CaseSpec {
     std::vector<dem::GrainMaterial> grain_materials;  ///< the grain (and grain-wall) materials used
     std::vector<GrainBlockSpec> grains;
     std::vector<GrainWallSpec> grain_walls;
+    std::vector<MeshSpec> meshes;
+    std::vector<GrainFeedSpec> grain_feeds;
     bool has_jet = false;  ///< [jet] given
     JetSpec jet;
     AbrasiveSpec abrasive;
@@ -250,9 +281,11 @@ struct CaseSpec {
     CouplingSpec coupling;
     bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
     /// Grains at the start ([[grains]]) or fed during the run ([abrasive]).
-    bool has_grains() const { return !grains.empty() || abrasive.enabled; }
+    bool has_grains() const { return !grains.empty() || abrasive.enabled || !grain_feeds.empty(); }
     /// The material of the first grains: the first [[grains]] block's, else the abrasive's.
-    int first_grain_material() const { return !grains.empty() ? grains.front().material : abrasive.material; }
+    int first_grain_material() const {
+        return !grains.empty() ? grains.front().material : !grain_feeds.empty() ? grain_feeds.front().material : abrasive.material;
+    }
 };
 
 }  // namespace grit::io

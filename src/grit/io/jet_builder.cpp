@@ -40,6 +40,7 @@ double mean_diameter(const dem::SizeDistribution& size) {
             using T = std::decay_t<decltype(d)>;
             if constexpr (std::is_same_v<T, dem::FixedSize>) return d.diameter;
             else if constexpr (std::is_same_v<T, dem::UniformSize>) return 0.5 * (d.min + d.max);
+            else if constexpr (std::is_same_v<T, dem::DiscreteSize>) return d.mean();
             else return d.mean;
         },
         size);

@@ -140,6 +140,7 @@ void validate(const PointCloud& cloud) {
 }
 
 constexpr std::uint8_t vtk_vertex = 1;
+constexpr std::uint8_t vtk_triangle = 5;
 
 }  // namespace
 
@@ -256,6 +257,78 @@ void write_vtu(const std::filesystem::path& file, const PointCloud& cloud) {
             }
         }
 
+        static constexpr std::string_view tail = "\n  </AppendedData>\n</VTKFile>\n";
+        out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
+    });
+}
+
+void write_surface_vtu(const std::filesystem::path& file, const TriangleSurface& surface) {
+    if (surface.points.size() % 3 != 0 || surface.triangles.size() % 3 != 0)
+        throw std::invalid_argument("write_surface_vtu: points and triangles need three values each");
+    const std::uint64_t points = surface.points.size() / 3, cells = surface.triangles.size() / 3;
+    for (const std::int64_t v : surface.triangles)
+        if (v < 0 || static_cast<std::uint64_t>(v) >= points)
+            throw std::invalid_argument(fmt::format("write_surface_vtu: point index {} out of range", v));
+    // The cell arrays are checked as the point arrays of a cloud of one point per triangle.
+    PointCloud check;
+    check.points.assign(3 * cells, 0.0);
+    check.arrays = surface.cell_arrays;
+    check.names = surface.names;
+    validate(check);
+
+    std::vector<Block> blocks;
+    blocks.push_back({"Float64", "Points", 3, 3 * points * sizeof(double), 0});
+    blocks.push_back({"Int64", "connectivity", 1, 3 * cells * sizeof(std::int64_t), 0});
+    blocks.push_back({"Int64", "offsets", 1, cells * sizeof(std::int64_t), 0});
+    blocks.push_back({"UInt8", "types", 1, cells * sizeof(std::uint8_t), 0});
+    for (const PointArray& a : surface.cell_arrays) {
+        const std::uint64_t count = cells * static_cast<std::uint64_t>(a.components);
+        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
+                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
+    }
+    std::uint64_t offset = 0;
+    for (Block& b : blocks) {
+        b.offset = offset;
+        offset += sizeof(std::uint64_t) + b.bytes;
+    }
+    std::string xml;
+    xml += "<?xml version=\"1.0\"?>\n";
+    xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n";
+    xml += "  <UnstructuredGrid>\n";
+    xml += field_data(check);
+    xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points, cells);
+    xml += "      <CellData>\n";
+    for (std::size_t i = 4; i < blocks.size(); ++i) xml += data_array_tag(blocks[i], "        ");
+    xml += "      </CellData>\n";
+    xml += "      <Points>\n";
+    xml += data_array_tag(blocks[0], "        ");
+    xml += "      </Points>\n";
+    xml += "      <Cells>\n";
+    for (std::size_t i = 1; i < 4; ++i) xml += data_array_tag(blocks[i], "        ");
+    xml += "      </Cells>\n";
+    xml += "    </Piece>\n";
+    xml += "  </UnstructuredGrid>\n";
+    xml += "  <AppendedData encoding=\"raw\">\n   _";
+
+    write_file_atomically(file, [&](std::ostream& out) {
+        out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
+        write_count(out, blocks[0].bytes);
+        write_raw(out, surface.points.data(), blocks[0].bytes);
+        write_count(out, blocks[1].bytes);
+        write_raw(out, surface.triangles.data(), blocks[1].bytes);
+        write_count(out, blocks[2].bytes);
+        std::vector<std::int64_t> ends(cells);
+        for (std::uint64_t c = 0; c < cells; ++c) ends[c] = 3 * static_cast<std::int64_t>(c + 1);
+        write_raw(out, ends.data(), blocks[2].bytes);
+        write_count(out, blocks[3].bytes);
+        write_uint8_fill(out, vtk_triangle, cells);
+        for (std::size_t i = 0; i < surface.cell_arrays.size(); ++i) {
+            const PointArray& a = surface.cell_arrays[i];
+            write_count(out, blocks[4 + i].bytes);
+            if (a.is_integer) write_raw(out, a.integer.data(), blocks[4 + i].bytes);
+            else write_raw(out, a.real.data(), blocks[4 + i].bytes);
+        }
         static constexpr std::string_view tail = "\n  </AppendedData>\n</VTKFile>\n";
         out.write(tail.data(), static_cast<std::streamsize>(tail.size()));
     });

@@ -3,7 +3,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <cstdint>
 #include <iosfwd>
+#include <vector>
 
 #include "grit/io/point_data.hpp"
 
@@ -18,6 +20,18 @@ namespace grit::io {
 /// Throws std::invalid_argument if an array's size is not n * components (or the point
 /// count is not a multiple of 3), std::runtime_error naming the path on I/O failure.
 void write_vtu(const std::filesystem::path& file, const PointCloud& cloud);
+
+/// A triangle surface with per-triangle data (wear maps of mesh walls).
+struct TriangleSurface {
+    std::vector<double> points;                ///< size 3 n
+    std::vector<std::int64_t> triangles;       ///< three point indices per triangle
+    std::vector<PointArray> cell_arrays;       ///< one value (x components) per triangle
+    std::vector<NameList> names;
+};
+
+/// Writes `surface` as a VTK XML UnstructuredGrid of VTK_TRIANGLE cells with cell data, in the form
+/// and with the checks of write_vtu.
+void write_surface_vtu(const std::filesystem::path& file, const TriangleSurface& surface);
 
 /// Runs `body` on a binary stream to a temporary file next to `file`, then renames the
 /// temporary file onto `file`, so readers never see a half-written file. The temporary file

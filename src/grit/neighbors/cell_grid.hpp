@@ -151,7 +151,9 @@ private:
         inverse_cell_size[k] = 1.0 / size;
         const double extent = (hi - lo) / size + 1.0;
         cells *= extent;
-        if (!std::isfinite(extent) || cells > 64.0 * (n + 1000.0))
+        // A blow-up flings particles far away; a dilute flow (grains strewn down a chute) spreads them
+        // too, so a grid of up to 4 million cells (32 MB of cell starts) is always allowed.
+        if (!std::isfinite(extent) || (cells > 64.0 * (n + 1000.0) && cells > 4.0e6))
             throw core::BlowUpError("particles spread over a region far larger than the case's: "
                                     "a neighbour grid would need too many cells");
         dims[k] = static_cast<Index>(extent) + 1;

@@ -19,7 +19,9 @@
 #include "grit/modules/analyses.hpp"
 #include "grit/modules/grain_contact.hpp"
 #include "grit/modules/coupling.hpp"
+#include "grit/modules/grain_feed.hpp"
 #include "grit/modules/grains.hpp"
+#include "grit/modules/mesh_wear.hpp"
 #include "grit/modules/open_boundaries.hpp"
 #include "grit/modules/isph_fluid.hpp"
 #include "grit/modules/sph_fluid.hpp"
@@ -236,6 +238,8 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         if (has_sph_ && spec_.coupling.enabled && has_fluid(spec_))
             modules_.push_back(std::make_unique<modules::CouplingModule<Dim>>(state_, setup_));
         modules_.push_back(std::move(grains));
+        if (!spec_.meshes.empty()) modules_.push_back(std::make_unique<modules::MeshWearModule<Dim>>(state_, setup_));
+        if (!spec_.grain_feeds.empty()) modules_.push_back(std::make_unique<modules::GrainFeedModule<Dim>>(state_, setup_));
         if (spec_.abrasive.enabled) modules_.push_back(std::make_unique<modules::AbrasiveFeedModule<Dim>>(state_, setup_));
     }
     if (!spec_.probes.empty()) {

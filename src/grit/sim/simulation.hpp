@@ -113,6 +113,13 @@ public:
     /// The grains, or null when the case has none.
     dem::DemSystem<Dim>* grains() { return state_.grains.get(); }
     const wear::ImpactLog& impacts() const { return state_.impacts; }
+    /// The run's module of type M (e.g. modules::MeshWearModule<Dim>, for its wear map), or null.
+    template <class M>
+    const M* module() const {
+        for (const auto& m : modules_)
+            if (const auto* found = dynamic_cast<const M*>(m.get())) return found;
+        return nullptr;
+    }
     /// Every output value at the current state, in column order.
     std::vector<OutputValue> output_values() const;
 

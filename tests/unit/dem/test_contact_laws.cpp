@@ -110,7 +110,8 @@ TEST(GrainMaterials, GarnetOfTable4) {
     EXPECT_DOUBLE_EQ(g->poisson_ratio, 0.3);
     EXPECT_DOUBLE_EQ(g->friction, 0.3);
     EXPECT_DOUBLE_EQ(g->restitution, 0.6);
-    EXPECT_FALSE(find_grain_material("sand").has_value());
+    EXPECT_TRUE(find_grain_material("sand").has_value());  // quartz sand, the second paper's loading
+    EXPECT_FALSE(find_grain_material("unobtainium").has_value());
 }
 
 // Eq. (51) for a garnet grain of Table 4, 3D: m = 1.7258e-8 kg, k_n = E R = 2.48e7 N/m,

@@ -178,7 +178,7 @@ TEST_F(CaseReaderTest, EveryShippedCaseReads) {
             EXPECT_EQ(c.gravity.size(), static_cast<std::size_t>(c.dimension));
             // SPH cases name their materials; grains-only cases (DEM) have grain materials instead.
             EXPECT_TRUE(!c.materials.empty() || (!c.has_sph() && !c.grain_materials.empty()));
-            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty() && c.solids.empty() && c.grains.empty());
+            EXPECT_FALSE(c.fluids.empty() && c.inlets.empty() && c.solids.empty() && !c.has_grains());
         } catch (const std::exception& e) {
             ADD_FAILURE() << f << ": " << e.what();
         }

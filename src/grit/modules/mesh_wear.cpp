@@ -1,0 +1,159 @@
+// Mesh walls module: set-up, impact and wear booking, wear maps.
+#include "grit/modules/mesh_wear.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "grit/core/error.hpp"
+#include "grit/io/vtu_writer.hpp"
+#include "grit/modules/grains.hpp"
+#include "grit/wear/wear_models.hpp"
+
+namespace grit::modules {
+
+template <int Dim>
+MeshWearModule<Dim>::MeshWearModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup) {
+    if constexpr (Dim != 3) {
+        throw core::InputError("key 'mesh': mesh walls need a 3D case (simulation.dimension = 3)");
+    } else {
+        std::size_t triangles = 0;
+        for (const auto& m : setup.spec.meshes) {
+            dem::MeshWall wall;
+            wall.name = m.name;
+            wall.mesh = *m.mesh;
+            wall.material = m.material;
+            wall.motion.velocity = core::to_vec<3>(m.velocity);
+            wall.motion.angular_velocity = core::to_vec<3>(m.angular_velocity);
+            wall.motion.centre = core::to_vec<3>(m.centre);
+            first_triangle_.push_back(triangles);
+            triangles += m.mesh->triangle_count();
+            state.grains->add_mesh(std::move(wall));
+        }
+        first_triangle_.push_back(triangles);
+        map_ = wear::WearMap(triangles);
+    }
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::install(sim::Pipeline& pipeline) {
+    // After the grains' step, which found this step's mesh contacts at the new positions.
+    pipeline.add(sim::Hook::post_force, "mesh_wear", [this] { book(); });
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::book() {
+    if constexpr (Dim == 3) {
+        const auto& system = *state_.grains;
+        const dem::MeshWalls& walls = *system.meshes();
+        const auto& grains = system.grains();
+        const double time = state_.clock.time + state_.clock.dt, dt = state_.clock.dt;
+        const auto& meshes = setup_.spec.meshes;
+        for (Index i = 0; i < grains.size(); ++i) {
+            const dem::MeshContact* contacts = walls.contacts_of(i);
+            for (int c = 0; c < walls.contact_count(i); ++c) {
+                const dem::MeshContact& k = contacts[c];
+                const auto t = static_cast<std::size_t>(k.triangle);
+                const auto& spec = meshes[walls.locate(k.triangle).first];
+                const double speed = core::norm(k.relative_velocity);
+                const double angle = impact_angle<3>(k.relative_velocity, k.normal);  // [deg]
+                const double radians = angle * std::numbers::pi / 180.0;
+                const auto& material = system.materials()[static_cast<std::size_t>(grains.material()[i])];
+                const wear::Impactor grain{grains.mass()[i], grains.radius()[i], material.density,
+                                           material.youngs_modulus, material.poisson_ratio};
+                if (k.fresh) {
+                    state_.impacts.add({time, grains.id()[i], spec.name, speed, angle});
+                    map_.add_impact(t, angle, speed);
+                    map_.add_mass(t,
+                                  spec.wear_material.density *
+                                      wear::impact_volume(spec.wear_model, spec.wear_material, grain, speed, radians));
+                }
+                // LIGGGHTS' form counts while the grain closes in on the wall.
+                if (spec.wear_model == wear::WearModel::finnie_liggghts &&
+                    core::dot(k.relative_velocity, k.normal) > 0.0)
+                    map_.add_mass(t, wear::liggghts_mass_rate(spec.wear_material, speed, k.force, radians) * dt);
+            }
+        }
+    }
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    out.push_back(sim::OutputValue::real("wear_mass_total", map_.total_mass(0, map_.size())));
+    const auto& meshes = setup_.spec.meshes;
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+        out.push_back(sim::OutputValue::real("wear_mass_" + meshes[m].name,
+                                             map_.total_mass(first_triangle_[m], first_triangle_[m + 1])));
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
+    namespace fs = std::filesystem;
+    fs::create_directories(place.dir / "walls");
+    if (!restart)
+        for (const auto& e : fs::directory_iterator(place.dir / "walls"))
+            if (e.path().extension() == ".vtu") fs::remove(e.path());
+    pvd_ = std::make_unique<io::PvdWriter>(place.dir / (place.name + "_walls.pvd"));
+    if (restart) pvd_->restore(restored_pvd_);
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::write_output(const sim::OutputPlace& place) {
+    if constexpr (Dim == 3) {
+        if (!place.snapshots) return;
+        const dem::MeshWalls& walls = *state_.grains->meshes();
+        const auto& corners = walls.corners();
+        const auto& meshes = setup_.spec.meshes;
+        io::TriangleSurface s;
+        // Three points per triangle (the corners where they are now): cell data need no shared points.
+        for (std::size_t t = 0; t < corners.size(); ++t)
+            for (std::size_t c = 0; c < 3; ++c) {
+                for (int k = 0; k < 3; ++k)
+                    s.points.push_back(corners[t][c][k]);
+                s.triangles.push_back(static_cast<std::int64_t>(3 * t + c));
+            }
+        io::PointArray mass{"wear_mass", 1, false, {}, {}}, depth{"wear_depth", 1, false, {}, {}},
+            count{"impact_count", 1, true, {}, {}}, angle{"mean_impact_angle", 1, false, {}, {}},
+            speed{"mean_impact_speed", 1, false, {}, {}}, which{"mesh", 1, true, {}, {}};
+        for (std::size_t t = 0; t < corners.size(); ++t) {
+            const auto [m, local] = walls.locate(static_cast<std::int32_t>(t));
+            const double rho = meshes[m].wear_material.density;
+            mass.real.push_back(map_.mass(t));
+            depth.real.push_back(std::isfinite(rho) ? map_.mass(t) / (rho * meshes[m].mesh->area(local)) : 0.0);
+            count.integer.push_back(static_cast<std::int32_t>(map_.impacts(t)));
+            angle.real.push_back(map_.mean_angle(t));
+            speed.real.push_back(map_.mean_speed(t));
+            which.integer.push_back(static_cast<std::int32_t>(m));
+        }
+        s.cell_arrays = {mass, depth, count, angle, speed, which};
+        io::NameList names{"mesh_names", {}};
+        for (const auto& m : meshes)
+            names.values.push_back(m.name);
+        s.names.push_back(std::move(names));
+        const auto file = fmt::format("walls/{}_walls_{:06}.vtu", place.name, snapshot_index_++);
+        io::write_surface_vtu(place.dir / file, s);
+        pvd_->add(state_.clock.time, file);
+    }
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::save(io::Hdf5Group& group) {
+    group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
+    auto map = group.create_group("wear_map");
+    map_.save(map);
+    io::save_pvd_entries(group, "pvd", pvd_ ? pvd_->entries() : restored_pvd_);
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::load(const io::Hdf5Group& group) {
+    snapshot_index_ = static_cast<long>(group.read_int("snapshot_index"));
+    map_.load(group.open_group("wear_map"));
+    restored_pvd_ = io::load_pvd_entries(group, "pvd");
+}
+
+template class MeshWearModule<2>;
+template class MeshWearModule<3>;
+
+}  // namespace grit::modules
