@@ -60,3 +60,19 @@ TEST(DamBreak, Front3DAgreesWith2D) {
         EXPECT_NEAR(f3, f2, 0.10 * f2) << "t = " << t;
     }
 }
+
+// The 3D dam break in a tank of wall particles laid along a closed STL box (cases/dambreak_mesh_3d)
+// against the same column in the particle tank (cases/dambreak_3d): the surge front within 5 % (issue 13).
+// To 0.25 s the two fronts agree to 0.1 mm (docs/validation.md); the test stops at 0.1 s to spare CI.
+TEST(DamBreak, FrontInAnStlTankAgreesWithTheParticleTank) {
+    const std::vector<double> times = {0.05, 0.10};
+    grit::sim::Simulation<3> particles(load_case("dambreak_3d/case.toml"), in_memory());
+    grit::sim::Simulation<3> mesh(load_case("dambreak_mesh_3d/case.toml"), in_memory());
+    for (double t : times) {
+        particles.advance_to(t);
+        mesh.advance_to(t);
+        const double a = particles.probe("front"), b = mesh.probe("front");
+        std::printf("t = %.2f  front particle tank = %.4f m  STL tank = %.4f m\n", t, a, b);
+        EXPECT_NEAR(b, a, 0.05 * a) << "t = " << t;
+    }
+}

@@ -32,10 +32,12 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     const double* m = particles.mass();
     const std::int32_t* phase = particles.phase();
     const auto solid = static_cast<std::int32_t>(Phase::solid), wall = static_cast<std::int32_t>(Phase::wall);
+    const bool walls = parameters_.walls;
     // Each solid or wall particle's grains within R_i + 2 d_ini, in ascending grain index; the contacts
     // take the list's order (by particle, then grain) at any thread count.
     pairs_.build(
-        x, n, [&](Index a) { return phase[a] == solid || phase[a] == wall; }, xg, radius, ng, near_distance, box);
+        x, n, [&](Index a) { return phase[a] == solid || (walls && phase[a] == wall); }, xg, radius, ng, near_distance,
+        box);
     contacts_.resize(pairs_.pair_count());
     if (contacts_.empty()) return;
 

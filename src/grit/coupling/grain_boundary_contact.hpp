@@ -19,6 +19,7 @@ struct PenaltyContactParameters {
     double spacing = 0.0;              ///< d_ini, the initial SPH particle spacing [m]
     double overlap_coefficient = 0.0;  ///< chi of eq. (13), 0 = no overlap allowed [-]
     double friction = 0.3;             ///< mu between grains and SPH solids and walls [-]
+    bool walls = true;                 ///< grains touch SPH wall particles (off where mesh walls stand in)
 };
 
 /// One grain-particle pair of the current step: in contact (closer than d_ini to the grain's surface),

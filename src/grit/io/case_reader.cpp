@@ -522,15 +522,36 @@ OutletSpec read_box(const Section& s, int dim) {
     return o;
 }
 
-ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank) {
+/// An STL file's triangles placed by the section's `scale`, `rotate` and `translate` (relative paths from
+/// the case file's folder).
+std::shared_ptr<const mesh::TriangleMesh> read_placed_mesh(const Section& s, const std::filesystem::path& folder,
+                                                           bool watertight, std::filesystem::path* resolved = nullptr) {
+    const std::filesystem::path file = s.text("file");
+    const std::filesystem::path path = file.is_absolute() ? file : folder / file;
+    if (resolved) *resolved = path;
+    mesh::Placement placement;
+    placement.scale = s.number_or("scale", 1.0, positive("[-]"));
+    placement.rotate = core::to_vec<3>(s.vector_or("rotate", 3, "[deg]", {0.0, 0.0, 0.0}));
+    placement.translate = core::to_vec<3>(s.vector_or("translate", 3, "[m]", {0.0, 0.0, 0.0}));
+    return std::make_shared<const mesh::TriangleMesh>(
+        mesh::TriangleMesh::from_facets(mesh::read_stl(path), placement, path.string(), watertight));
+}
+
+ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank, const std::filesystem::path& folder = {}) {
     ShapeSpec shape;
     std::vector<std::string> kinds = {"box", "disc", "sphere"};
     if (dim == 3) kinds.push_back("cylinder");
     if (allow_tank) kinds.push_back("tank");
+    if (allow_tank && dim == 3) kinds.push_back("mesh");
     shape.kind = s.choice("shape", "box", kinds);
     if (shape.kind == "sphere") shape.kind = "disc";
     const char* axis = "xyz";
-    if (shape.kind == "box" || shape.kind == "tank") {
+    if (shape.kind == "mesh") {
+        // Wall particles are laid by the signed distance, which needs a closed surface.
+        shape.mesh = read_placed_mesh(s, folder, true);
+        shape.layers = s.integer_or("layers", 3, 1, 20);
+        shape.outside = s.choice("side", "outside", {"outside", "inside"}) == "outside";
+    } else if (shape.kind == "box" || shape.kind == "tank") {
         shape.min = s.vector("min", dim, "[m]");
         shape.max = s.vector("max", dim, "[m]");
         for (int k = 0; k < dim; ++k) {
@@ -659,15 +680,7 @@ void read_meshes(const Section& top, CaseSpec& c, GrainMaterialTable& grain_tabl
             m.fail("name", "must be a non-empty name without commas, spaces or quotes");
         for (const auto& other : c.meshes)
             if (other.name == spec.name) m.fail("name", "is the name of another [[mesh]]");
-        const std::filesystem::path file = m.text("file");
-        spec.file = file.is_absolute() ? file : folder / file;
-        mesh::Placement placement;
-        placement.scale = m.number_or("scale", 1.0, positive("[-]"));
-        placement.rotate = core::to_vec<3>(m.vector_or("rotate", 3, "[deg]", {0.0, 0.0, 0.0}));
-        placement.translate = core::to_vec<3>(m.vector_or("translate", 3, "[m]", {0.0, 0.0, 0.0}));
-        const bool watertight = m.flag_or("watertight", false);
-        spec.mesh = std::make_shared<const mesh::TriangleMesh>(
-            mesh::TriangleMesh::from_facets(mesh::read_stl(spec.file), placement, spec.file.string(), watertight));
+        spec.mesh = read_placed_mesh(m, folder, m.flag_or("watertight", false), &spec.file);
         spec.material = m.has("material") ? grain_table.resolve(m, "material", m.text("material")) : c.first_grain_material();
         const std::string model = m.choice("wear_model", "none", {"none", "finnie", "bitter", "oka", "finnie_liggghts"});
         spec.wear_model = *wear::wear_model_named(model);
@@ -1037,7 +1050,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     for (const Section& w : top.sections("wall")) {
         BlockSpec b;
         b.key = w.path();
-        b.shape = read_shape(w, dim, dx, true);
+        b.shape = read_shape(w, dim, dx, true, c.source.parent_path());
         if (!w.has("material") && default_material < 0)
             w.fail("material", "is required: walls take the EOS of a fluid, and the case has none");
         b.material = w.has("material") ? table.resolve(w, "material", w.text("material")) : default_material;
@@ -1177,6 +1190,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         if (d.has("periodic")) dem_periodic = read_axes(d, "periodic", dim);
         c.dem.overlap_coefficient = d.number_or("overlap_coefficient", 0.0, in_range(0.0, 0.999));
         c.dem.solid_friction = d.number_or("solid_friction", -1.0, non_negative("[-]"));
+        c.dem.wall_particle_contact = d.flag_or("wall_particle_contact", true);
     }
     if (top.has("coupling")) {
         const Section k = top.section("coupling");

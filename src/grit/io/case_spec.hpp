@@ -25,6 +25,10 @@ struct ShapeSpec {
     int axis = 0;                   ///< cylinder: 0 = x, 1 = y, 2 = z
     int layers = 0;                 ///< tank: wall thickness in particle layers
     std::vector<std::string> open;  ///< tank: sides left without wall ("top", "bottom", "left", ...)
+    /// mesh (3D walls): the closed STL surface, placed; `layers` of particles on its `outside` (a
+    /// container: the fluid is inside) or inside (an obstacle).
+    std::shared_ptr<const mesh::TriangleMesh> mesh;
+    bool outside = true;
 };
 
 /// A block of particles: fluid, solid or wall.
@@ -175,6 +179,8 @@ struct DemSpec {
     double skin = -1.0;                 ///< Verlet skin [m]; < 0: 0.2 x the largest diameter
     double overlap_coefficient = 0.0;   ///< chi of eq. (13)
     double solid_friction = -1.0;       ///< mu grain-SPH solid/wall; < 0: the grain material's
+    /// Grains touch SPH wall particles (penalty contact); false where [[mesh]] walls stand for them.
+    bool wall_particle_contact = true;
 };
 
 /// [coupling]: the unresolved fluid-grain coupling (first paper section 2.5), on in every case with

@@ -96,6 +96,12 @@ double shape_particle_bound(const ShapeSpec& shape, int dim, double dx) {
         }
         return std::max(0.0, outer - inner);
     }
+    if (shape.kind == "mesh" && shape.mesh) {
+        // A shell `layers` thick over the mesh's area, with a margin for edges and corners.
+        double area = 0.0;
+        for (std::size_t t = 0; t < shape.mesh->triangle_count(); ++t) area += shape.mesh->area(t);
+        return 2.0 * area / (dx * dx) * shape.layers + 1000.0;
+    }
     return 0.0;
 }
 

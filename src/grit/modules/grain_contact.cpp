@@ -12,6 +12,7 @@ GrainContactModule<Dim>::GrainContactModule(sim::State<Dim>& state, const sim::R
     coupling::PenaltyContactParameters c;
     c.spacing = spec.particle_spacing;
     c.overlap_coefficient = spec.dem.overlap_coefficient;
+    c.walls = spec.dem.wall_particle_contact;
     c.friction = spec.dem.solid_friction >= 0.0
                      ? spec.dem.solid_friction
                      : spec.grain_materials[static_cast<std::size_t>(spec.first_grain_material())].friction;

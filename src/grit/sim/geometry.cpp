@@ -1,6 +1,8 @@
 // Particle lattices for geometry primitives.
 #include "grit/sim/geometry.hpp"
 
+#include "grit/mesh/signed_distance.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -62,6 +64,21 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
                 if (k != shape.axis) r2 += (x[k] - c[k]) * (x[k] - c[k]);
             if (r2 <= shape.radius * shape.radius) points.push_back(x);
         });
+    } else if (shape.kind == "mesh") {
+        if constexpr (Dim == 3) {
+            // The lattice of the mesh's box widened by the layers, aligned at its low corner as a tank's,
+            // so that a face on a lattice plane of an axis-aligned mesh lies half a spacing from the
+            // nearest particles; kept: the points within the layers' thickness on the wall's side.
+            const mesh::SignedDistance distance(*shape.mesh);
+            const double t = shape.layers * dx;
+            Vec lo = shape.mesh->vertices().front(), hi = lo;
+            for (const Vec& v : shape.mesh->vertices())
+                for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+            for_each_lattice_point<3>(lo - Vec::filled(t), hi + Vec::filled(t), dx, [&](const Vec& x) {
+                const double d = shape.outside ? distance(x) : -distance(x);
+                if (d > 0.0 && d <= t) points.push_back(x);
+            });
+        }
     } else if (shape.kind == "tank") {
         const Vec lo = to_vec<Dim>(shape.min), hi = to_vec<Dim>(shape.max);
         const double t = shape.layers * dx;
