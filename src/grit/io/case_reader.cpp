@@ -547,10 +547,10 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank, cons
     if (shape.kind == "sphere") shape.kind = "disc";
     const char* axis = "xyz";
     if (shape.kind == "mesh") {
-        // Wall particles are laid by the signed distance, which needs a closed surface.
-        shape.mesh = read_placed_mesh(s, folder, true);
+        // Wall particles are laid by the signed distance: outside/inside need a closed surface.
+        shape.side = s.choice("side", "outside", {"outside", "inside", "front", "back"});
+        shape.mesh = read_placed_mesh(s, folder, shape.side == "outside" || shape.side == "inside");
         shape.layers = s.integer_or("layers", 3, 1, 20);
-        shape.outside = s.choice("side", "outside", {"outside", "inside"}) == "outside";
     } else if (shape.kind == "box" || shape.kind == "tank") {
         shape.min = s.vector("min", dim, "[m]");
         shape.max = s.vector("max", dim, "[m]");

@@ -25,10 +25,11 @@ struct ShapeSpec {
     int axis = 0;                   ///< cylinder: 0 = x, 1 = y, 2 = z
     int layers = 0;                 ///< tank: wall thickness in particle layers
     std::vector<std::string> open;  ///< tank: sides left without wall ("top", "bottom", "left", ...)
-    /// mesh (3D walls): the closed STL surface, placed; `layers` of particles on its `outside` (a
-    /// container: the fluid is inside) or inside (an obstacle).
+    /// mesh (3D walls): the STL surface, placed; `layers` of particles on its `side`: "outside" (a closed
+    /// container: the fluid is inside), "inside" (a closed obstacle), "front" or "back" (any mesh: the side
+    /// its facet normals point to, or away from; a plate the fluid meets on the other side).
     std::shared_ptr<const mesh::TriangleMesh> mesh;
-    bool outside = true;
+    std::string side = "outside";
 };
 
 /// A block of particles: fluid, solid or wall.

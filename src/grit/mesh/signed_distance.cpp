@@ -9,7 +9,7 @@
 
 namespace grit::mesh {
 
-SignedDistance::SignedDistance(const TriangleMesh& mesh) : mesh_(mesh) {
+SignedDistance::SignedDistance(const TriangleMesh& mesh, bool closed) : mesh_(mesh) {
     const auto& v = mesh.vertices();
     const auto& tri = mesh.triangles();
     face_normal_.resize(tri.size());
@@ -40,15 +40,21 @@ SignedDistance::SignedDistance(const TriangleMesh& mesh) : mesh_(mesh) {
         box_low_.push_back(lo);
         box_high_.push_back(hi);
     }
-    orientation_ = signed_volume < 0.0 ? -1.0 : 1.0;
+    orientation_ = closed && signed_volume < 0.0 ? -1.0 : 1.0;
+    rim_vertex_.assign(mesh.vertex_count(), 0);
+    for (std::size_t e = 0; e < mesh.edge_count(); ++e)
+        if (mesh.edge_triangles(e)[1] < 0)
+            for (const auto corner : mesh.edge_vertices(e))
+                rim_vertex_[static_cast<std::size_t>(corner)] = 1;
     volume_ = std::abs(signed_volume);
 }
 
-double SignedDistance::operator()(const Vec3& p) const {
+SignedDistance::Query SignedDistance::query(const Vec3& p) const {
     const auto& v = mesh_.vertices();
     const auto& tri = mesh_.triangles();
     double best = std::numeric_limits<double>::infinity();
     Vec3 normal = Vec3::zero(), closest = p;
+    bool rim = false;
     for (std::size_t t = 0; t < tri.size(); ++t) {
         // A triangle whose box is farther than the best so far cannot be closer.
         double gap2 = 0.0;
@@ -64,15 +70,21 @@ double SignedDistance::operator()(const Vec3& p) const {
         if (d2 >= best) continue;
         best = d2;
         closest = q.point;
-        if (q.feature == Feature::face)
+        rim = false;
+        if (q.feature == Feature::face) {
             normal = face_normal_[t];
-        else if (q.feature == Feature::edge)
-            normal = edge_normal_[static_cast<std::size_t>(mesh_.triangle_edges(t)[static_cast<std::size_t>(q.index)])];
-        else
-            normal = vertex_normal_[static_cast<std::size_t>(tri[t][static_cast<std::size_t>(q.index)])];
+        } else if (q.feature == Feature::edge) {
+            const auto e = static_cast<std::size_t>(mesh_.triangle_edges(t)[static_cast<std::size_t>(q.index)]);
+            normal = edge_normal_[e];
+            rim = mesh_.edge_triangles(e)[1] < 0;
+        } else {
+            const auto c = static_cast<std::size_t>(tri[t][static_cast<std::size_t>(q.index)]);
+            normal = vertex_normal_[c];
+            rim = rim_vertex_[c] != 0;
+        }
     }
     const double distance = std::sqrt(best);
-    return core::dot(p - closest, normal) * orientation_ >= 0.0 ? distance : -distance;
+    return {core::dot(p - closest, normal) * orientation_ >= 0.0 ? distance : -distance, rim};
 }
 
 }  // namespace grit::mesh

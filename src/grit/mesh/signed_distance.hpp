@@ -4,6 +4,7 @@
 // 2005), which gives the right sign at edges and corners too. Used to lay wall particles along a mesh.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "grit/mesh/triangle_mesh.hpp"
@@ -12,12 +13,18 @@ namespace grit::mesh {
 
 class SignedDistance {
   public:
-    /// `mesh` must be watertight and consistently oriented; a mesh whose normals point inwards (negative
-    /// enclosed volume) is handled by flipping the sign, so "outside" is always outside.
-    explicit SignedDistance(const TriangleMesh& mesh);
+    /// For a `closed` mesh (watertight, consistently oriented) the sign is outside/inside: a mesh whose
+    /// normals point inwards (negative enclosed volume) has its sign flipped. For an open mesh it is the
+    /// side its facet normals point to (> 0) or away from (< 0).
+    explicit SignedDistance(const TriangleMesh& mesh, bool closed = true);
 
-    /// Signed distance of p [m]: > 0 outside the closed surface, < 0 inside.
-    double operator()(const Vec3& p) const;
+    struct Query {
+        double distance;  ///< signed [m]
+        bool on_rim;      ///< the closest point is on an open edge or one of its corners (beyond the rim)
+    };
+    Query query(const Vec3& p) const;
+    /// Signed distance of p [m]: > 0 outside the closed surface (in front of an open one), < 0 inside.
+    double operator()(const Vec3& p) const { return query(p).distance; }
     /// The volume the mesh encloses [m^3] (positive whatever its orientation).
     double volume() const noexcept { return volume_; }
 
@@ -25,6 +32,7 @@ class SignedDistance {
     const TriangleMesh& mesh_;
     std::vector<Vec3> face_normal_, edge_normal_, vertex_normal_;
     std::vector<Vec3> box_low_, box_high_;  // per triangle
+    std::vector<std::uint8_t> rim_vertex_;  // corners of open edges
     double orientation_ = 1.0, volume_ = 0.0;
 };
 

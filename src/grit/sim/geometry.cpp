@@ -69,14 +69,18 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
             // The lattice of the mesh's box widened by the layers, aligned at its low corner as a tank's,
             // so that a face on a lattice plane of an axis-aligned mesh lies half a spacing from the
             // nearest particles; kept: the points within the layers' thickness on the wall's side.
-            const mesh::SignedDistance distance(*shape.mesh);
+            // outside/inside: a closed mesh; front/back: any mesh, by its facet normals, without wrapping
+            // round the rim of an open one.
+            const bool closed = shape.side == "outside" || shape.side == "inside";
+            const mesh::SignedDistance distance(*shape.mesh, closed);
             const double t = shape.layers * dx;
             Vec lo = shape.mesh->vertices().front(), hi = lo;
             for (const Vec& v : shape.mesh->vertices())
                 for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
             for_each_lattice_point<3>(lo - Vec::filled(t), hi + Vec::filled(t), dx, [&](const Vec& x) {
-                const double d = shape.outside ? distance(x) : -distance(x);
-                if (d > 0.0 && d <= t) points.push_back(x);
+                const auto q = distance.query(x);
+                const double d = shape.side == "outside" || shape.side == "front" ? q.distance : -q.distance;
+                if (d > 0.0 && d <= t && (closed || !q.on_rim)) points.push_back(x);
             });
         }
     } else if (shape.kind == "tank") {
