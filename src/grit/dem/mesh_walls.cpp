@@ -184,7 +184,7 @@ void MeshWalls::find_contacts(const Vec3& x, double r, std::vector<Candidate>& o
                 drop = hit.feature_id == o.feature_id;  // the edge or corner again, from its other triangles
             } else if (locate(o.triangle).first == w) {
                 // An edge or corner of a face, or a corner of an edge, already in contact.
-                const auto [ow, olocal] = locate(o.triangle);
+                const std::size_t olocal = locate(o.triangle).second;
                 if (hit.feature == mesh::Feature::edge) {
                     const auto e = static_cast<std::size_t>(hit.feature_id) - edge_offset_[w];
                     const auto& two = m.edge_triangles(e);
@@ -199,7 +199,6 @@ void MeshWalls::find_contacts(const Vec3& x, double r, std::vector<Candidate>& o
                         const auto& ends = m.edge_vertices(static_cast<std::size_t>(o.feature_id) - edge_offset_[w]);
                         drop = ends[0] == vtx || ends[1] == vtx;
                     }
-                    (void)ow;
                 }
             }
         }

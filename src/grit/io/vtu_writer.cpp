@@ -139,6 +139,54 @@ void validate(const PointCloud& cloud) {
     }
 }
 
+/// The appended blocks of a grid, in file order, with their offsets: points, connectivity (`links`
+/// indices), offsets and types (one per cell), then the data arrays (`items` values of each: points or
+/// cells).
+std::vector<Block> grid_blocks(std::uint64_t points, std::uint64_t links, std::uint64_t cells,
+                               const std::vector<PointArray>& arrays, std::uint64_t items) {
+    std::vector<Block> blocks;
+    blocks.push_back({"Float64", "Points", 3, 3 * points * sizeof(double), 0});
+    blocks.push_back({"Int64", "connectivity", 1, links * sizeof(std::int64_t), 0});
+    blocks.push_back({"Int64", "offsets", 1, cells * sizeof(std::int64_t), 0});
+    blocks.push_back({"UInt8", "types", 1, cells * sizeof(std::uint8_t), 0});
+    for (const PointArray& a : arrays) {
+        const std::uint64_t count = items * static_cast<std::uint64_t>(a.components);
+        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
+                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
+    }
+    std::uint64_t offset = 0;
+    for (Block& b : blocks) {
+        b.offset = offset;
+        offset += sizeof(std::uint64_t) + b.bytes;
+    }
+    return blocks;
+}
+
+/// The XML before the appended data; the data arrays go under `data` ("PointData" or "CellData").
+std::string grid_xml(const std::vector<Block>& blocks, const std::string& field, std::uint64_t points,
+                     std::uint64_t cells, const char* data) {
+    std::string xml;
+    xml += "<?xml version=\"1.0\"?>\n";
+    xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n";
+    xml += "  <UnstructuredGrid>\n";
+    xml += field;
+    xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points, cells);
+    xml += fmt::format("      <{}>\n", data);
+    for (std::size_t i = 4; i < blocks.size(); ++i) xml += data_array_tag(blocks[i], "        ");
+    xml += fmt::format("      </{}>\n", data);
+    xml += "      <Points>\n";
+    xml += data_array_tag(blocks[0], "        ");
+    xml += "      </Points>\n";
+    xml += "      <Cells>\n";
+    for (std::size_t i = 1; i < 4; ++i) xml += data_array_tag(blocks[i], "        ");
+    xml += "      </Cells>\n";
+    xml += "    </Piece>\n";
+    xml += "  </UnstructuredGrid>\n";
+    xml += "  <AppendedData encoding=\"raw\">\n   _";
+    return xml;
+}
+
 constexpr std::uint8_t vtk_vertex = 1;
 constexpr std::uint8_t vtk_triangle = 5;
 
@@ -192,46 +240,9 @@ void write_vtu(const std::filesystem::path& file, const PointCloud& cloud) {
     validate(cloud);
     const std::uint64_t n = cloud.size();
 
-    // Appended blocks, in file order: points, cells, then the point-data arrays.
-    std::vector<Block> blocks;
-    blocks.push_back({"Float64", "Points", 3, 3 * n * sizeof(double), 0});
-    blocks.push_back({"Int64", "connectivity", 1, n * sizeof(std::int64_t), 0});
-    blocks.push_back({"Int64", "offsets", 1, n * sizeof(std::int64_t), 0});
-    blocks.push_back({"UInt8", "types", 1, n * sizeof(std::uint8_t), 0});
-    for (const PointArray& a : cloud.arrays) {
-        const std::uint64_t count = n * static_cast<std::uint64_t>(a.components);
-        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
-                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
-    }
-    std::uint64_t offset = 0;
-    for (Block& b : blocks) {
-        b.offset = offset;
-        offset += sizeof(std::uint64_t) + b.bytes;
-    }
-
-    std::string xml;
-    xml += "<?xml version=\"1.0\"?>\n";
-    xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n";
-    xml += "  <UnstructuredGrid>\n";
-    xml += field_data(cloud);
-    xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", n, n);
-    xml += "      <PointData>\n";
-    for (std::size_t i = 4; i < blocks.size(); ++i) {
-        xml += data_array_tag(blocks[i], "        ");
-    }
-    xml += "      </PointData>\n";
-    xml += "      <Points>\n";
-    xml += data_array_tag(blocks[0], "        ");
-    xml += "      </Points>\n";
-    xml += "      <Cells>\n";
-    for (std::size_t i = 1; i < 4; ++i) {
-        xml += data_array_tag(blocks[i], "        ");
-    }
-    xml += "      </Cells>\n";
-    xml += "    </Piece>\n";
-    xml += "  </UnstructuredGrid>\n";
-    xml += "  <AppendedData encoding=\"raw\">\n   _";
+    // Every point is a one-point cell.
+    const std::vector<Block> blocks = grid_blocks(n, n, n, cloud.arrays, n);
+    const std::string xml = grid_xml(blocks, field_data(cloud), n, n, "PointData");
 
     write_file_atomically(file, [&](std::ostream& out) {
         out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
@@ -276,40 +287,8 @@ void write_surface_vtu(const std::filesystem::path& file, const TriangleSurface&
     check.names = surface.names;
     validate(check);
 
-    std::vector<Block> blocks;
-    blocks.push_back({"Float64", "Points", 3, 3 * points * sizeof(double), 0});
-    blocks.push_back({"Int64", "connectivity", 1, 3 * cells * sizeof(std::int64_t), 0});
-    blocks.push_back({"Int64", "offsets", 1, cells * sizeof(std::int64_t), 0});
-    blocks.push_back({"UInt8", "types", 1, cells * sizeof(std::uint8_t), 0});
-    for (const PointArray& a : surface.cell_arrays) {
-        const std::uint64_t count = cells * static_cast<std::uint64_t>(a.components);
-        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
-                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
-    }
-    std::uint64_t offset = 0;
-    for (Block& b : blocks) {
-        b.offset = offset;
-        offset += sizeof(std::uint64_t) + b.bytes;
-    }
-    std::string xml;
-    xml += "<?xml version=\"1.0\"?>\n";
-    xml += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n";
-    xml += "  <UnstructuredGrid>\n";
-    xml += field_data(check);
-    xml += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points, cells);
-    xml += "      <CellData>\n";
-    for (std::size_t i = 4; i < blocks.size(); ++i) xml += data_array_tag(blocks[i], "        ");
-    xml += "      </CellData>\n";
-    xml += "      <Points>\n";
-    xml += data_array_tag(blocks[0], "        ");
-    xml += "      </Points>\n";
-    xml += "      <Cells>\n";
-    for (std::size_t i = 1; i < 4; ++i) xml += data_array_tag(blocks[i], "        ");
-    xml += "      </Cells>\n";
-    xml += "    </Piece>\n";
-    xml += "  </UnstructuredGrid>\n";
-    xml += "  <AppendedData encoding=\"raw\">\n   _";
+    const std::vector<Block> blocks = grid_blocks(points, 3 * cells, cells, surface.cell_arrays, cells);
+    const std::string xml = grid_xml(blocks, field_data(check), points, cells, "CellData");
 
     write_file_atomically(file, [&](std::ostream& out) {
         out.write(xml.data(), static_cast<std::streamsize>(xml.size()));
