@@ -72,97 +72,33 @@ Vec3 MeshWalls::surface_velocity(std::size_t w, const Vec3& x) const {
 
 void MeshWalls::rebuild_bins(double reach) {
     if (!placed_) place(0.0);
-    Vec3 lo = corners_.front()[0], hi = lo;
-    for (const auto& t : corners_)
-        for (const Vec3& p : t)
-            for (int k = 0; k < 3; ++k)
-                lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    for (int k = 0; k < 3; ++k)
-        lo[k] -= reach, hi[k] += reach;
-    // Cells of twice the largest radius, coarser if the grid would pass 2 million cells.
-    cell_ = std::max(2.0 * reach, 1e-12);
-    auto count = [&](double c) {
-        std::int64_t total = 1;
-        for (int k = 0; k < 3; ++k)
-            total *= static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) / c)) + 1;
-        return total;
-    };
-    while (count(cell_) > 2'000'000)
-        cell_ *= 1.5;
-    grid_low_ = lo;
-    for (int k = 0; k < 3; ++k)
-        cells_[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) / cell_)) + 1;
-    const std::int64_t total = cells_[0] * cells_[1] * cells_[2];
-    // Each triangle goes into every cell its box, widened by the reach, overlaps: a grain touching it has
-    // its centre within its radius of the triangle, so in one of those cells.
-    auto cell_range = [&](const std::array<Vec3, 3>& t, std::array<std::int64_t, 3>& a,
-                          std::array<std::int64_t, 3>& b) {
-        for (int k = 0; k < 3; ++k) {
-            const double l = std::min({t[0][k], t[1][k], t[2][k]}) - reach,
-                         h = std::max({t[0][k], t[1][k], t[2][k]}) + reach;
-            const auto K = static_cast<std::size_t>(k);
-            a[K] =
-                std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((l - lo[k]) / cell_)), 0, cells_[K] - 1);
-            b[K] =
-                std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((h - lo[k]) / cell_)), 0, cells_[K] - 1);
-        }
-    };
-    cell_start_.assign(static_cast<std::size_t>(total) + 1, 0);
-    std::array<std::int64_t, 3> a{}, b{};
-    for (const auto& t : corners_) {
-        cell_range(t, a, b);
-        for (std::int64_t i = a[0]; i <= b[0]; ++i)
-            for (std::int64_t j = a[1]; j <= b[1]; ++j)
-                for (std::int64_t k = a[2]; k <= b[2]; ++k)
-                    ++cell_start_[static_cast<std::size_t>((i * cells_[1] + j) * cells_[2] + k) + 1];
-    }
-    for (std::int64_t c = 0; c < total; ++c)
-        cell_start_[static_cast<std::size_t>(c) + 1] += cell_start_[static_cast<std::size_t>(c)];
-    cell_items_.assign(static_cast<std::size_t>(cell_start_.back()), 0);
-    std::vector<std::int64_t> next(cell_start_.begin(), cell_start_.end() - 1);
-    for (std::size_t t = 0; t < corners_.size(); ++t) {
-        cell_range(corners_[t], a, b);
-        for (std::int64_t i = a[0]; i <= b[0]; ++i)
-            for (std::int64_t j = a[1]; j <= b[1]; ++j)
-                for (std::int64_t k = a[2]; k <= b[2]; ++k)
-                    cell_items_[static_cast<std::size_t>(
-                        next[static_cast<std::size_t>((i * cells_[1] + j) * cells_[2] + k)]++)] =
-                        static_cast<std::int32_t>(t);
-    }
-    binned_reach_ = reach;
+    // Cells of twice the largest radius (coarser if the grid would pass 2 million cells).
+    bins_.build(corners_, reach);
     bins_dirty_ = false;
 }
 
 void MeshWalls::find_contacts(const Vec3& x, double r, std::vector<Candidate>& out) const {
     out.clear();
-    std::array<std::int64_t, 3> at{};
-    for (int k = 0; k < 3; ++k) {
-        const double u = std::floor((x[k] - grid_low_[k]) / cell_);
-        if (!(u >= 0.0) || u >= static_cast<double>(cells_[static_cast<std::size_t>(k)])) return;  // off the grid
-        at[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(u);
-    }
-    const auto cell = static_cast<std::size_t>((at[0] * cells_[1] + at[1]) * cells_[2] + at[2]);
     const double r2 = r * r;
-    for (std::int64_t s = cell_start_[cell]; s < cell_start_[cell + 1]; ++s) {
-        const std::int32_t t = cell_items_[static_cast<std::size_t>(s)];
+    bins_.for_each_candidate(x, [&](const std::int32_t t) {
         const auto& p = corners_[static_cast<std::size_t>(t)];
         const mesh::ClosestPoint q = mesh::closest_point_on_triangle(x, p[0], p[1], p[2]);
         const double d2 = core::norm2(q.point - x);
-        if (d2 >= r2) continue;
+        if (d2 >= r2) return;
         const auto [w, local] = locate(t);
         const mesh::TriangleMesh& m = walls_[w].mesh;
         std::int64_t id = t;
         if (q.feature == mesh::Feature::edge) {
             const auto e = static_cast<std::size_t>(m.triangle_edges(local)[static_cast<std::size_t>(q.index)]);
-            if (!m.edge_active(e)) continue;  // inside a flat region: the triangle beside it gives a face contact
+            if (!m.edge_active(e)) return;  // inside a flat region: the triangle beside it gives a face contact
             id = static_cast<std::int64_t>(edge_offset_[w] + e);
         } else if (q.feature == mesh::Feature::vertex) {
             const auto v = static_cast<std::size_t>(m.triangles()[local][static_cast<std::size_t>(q.index)]);
-            if (!m.vertex_active(v)) continue;
+            if (!m.vertex_active(v)) return;
             id = static_cast<std::int64_t>(vertex_offset_[w] + v);
         }
         out.push_back({t, q.feature, id, q.point, d2});
-    }
+    });
     // Faces first, then edges, then corners; nearest first within each.
     std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
         if (a.feature != b.feature) return a.feature < b.feature;

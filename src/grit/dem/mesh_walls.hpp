@@ -22,6 +22,7 @@
 #include "grit/dem/grain_loop.hpp"
 #include "grit/dem/grain_set.hpp"
 #include "grit/mesh/closest_point.hpp"
+#include "grit/mesh/triangle_bins.hpp"
 #include "grit/mesh/triangle_mesh.hpp"
 
 namespace grit::dem {
@@ -109,12 +110,7 @@ class MeshWalls {
     std::vector<Vec3> centre_now_;  // each wall's rotation centre at the last place()
     bool placed_ = false;
     double placed_time_ = 0.0;
-    // Bins: triangle lists of a uniform grid over the meshes' box widened by the reach.
-    Vec3 grid_low_ = Vec3::zero();
-    double cell_ = 0.0, binned_reach_ = -1.0;
-    std::array<std::int64_t, 3> cells_{};
-    std::vector<std::int64_t> cell_start_;
-    std::vector<std::int32_t> cell_items_;
+    mesh::TriangleBins bins_;  // over the placed triangles, for the largest grain radius
     bool bins_dirty_ = true;
     // Per grain, the contacts of the last pass.
     std::vector<MeshContact> contacts_;
@@ -130,7 +126,7 @@ void MeshWalls::contact_pass(GrainSet<3>& grains, const PairMaterialTable& mater
     counts_.assign(static_cast<std::size_t>(n), 0);
     if (n == 0 || walls_.empty()) return;
     const double rmax = max_over_grains(n, 0.0, [&](Index i) { return grains.radius()[i]; });
-    if (bins_dirty_ || rmax > binned_reach_) rebuild_bins(rmax);
+    if (bins_dirty_ || rmax > bins_.reach()) rebuild_bins(rmax);
 
     std::array<std::int32_t*, slots> slot_triangle{};
     std::array<Vec3*, slots> slot_history{};
