@@ -175,10 +175,11 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
         grain_mass += m;
     }
     out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0).series_only());
-    if (g > 0.0 && grains.size() > 0) {
-        out.push_back(OutputValue::real("settling_velocity", settling / grain_mass).series_only());
-        out.push_back(OutputValue::real("terminal_velocity", settling / grain_mass).summary_only());
-    }
+    // A column whether or not grains are there yet (a feed that starts later, grains that all left).
+    const double settling_velocity = grain_mass > 0.0 ? settling / grain_mass : std::numeric_limits<double>::quiet_NaN();
+    if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity).series_only());
+    if (g > 0.0 && grain_mass > 0.0)
+        out.push_back(OutputValue::real("terminal_velocity", settling_velocity).summary_only());
     out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed()).summary_only());
     out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count())).series_only());
     bed_values(out);
