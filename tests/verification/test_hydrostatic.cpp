@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include <array>
 #include <cmath>
 
 #include "grit/parallel/parallel.hpp"
@@ -59,6 +60,32 @@ TEST(Hydrostatic, TankFromAnStlMesh3D) {
         std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", sim.spec().probes[k].name.c_str(), sim.probe(k),
                     rho0 * g * (0.2 - sim.spec().probes[k].position[2]));
     check_tank<3>(sim, 0.2, {0.2, 0.1, 0.3});
+}
+
+// Two levels across a membrane of zero thickness (issue 13: particles on the two sides of a thin wall
+// must not interact; second paper, sec. 3.2): each side's pressure is rho g times its own depth within
+// 5 %, and no particle crosses the membrane.
+TEST(Hydrostatic, TwoLevelsAcrossAThinMembrane3D) {
+    grit::sim::Simulation<3> sim(load_case("hydrostatic_membrane_3d/case.toml"), in_memory());
+    auto sides = [&] {
+        std::array<int, 2> count{0, 0};
+        const auto& ps = sim.particles();
+        for (grit::Index i = 0; i < ps.size(); ++i)
+            if (ps.phase()[i] == 0) ++count[ps.position()[i][0] < 0.05 ? 0 : 1];
+        return count;
+    };
+    const auto before = sides();
+    sim.advance_to(sim.spec().end_time);
+    const double surface[3] = {0.1, 0.1, 0.05};  // the probes: two on the left, one on the right
+    for (std::size_t k = 0; k < sim.spec().probes.size(); ++k) {
+        const double expected = rho0 * g * (surface[k] - sim.spec().probes[k].position[2]);
+        std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", sim.spec().probes[k].name.c_str(), sim.probe(k), expected);
+        EXPECT_NEAR(sim.probe(k), expected, 0.05 * expected) << sim.spec().probes[k].name;
+    }
+    const auto after = sides();
+    EXPECT_EQ(after[0], before[0]) << "particles crossed the membrane";
+    EXPECT_EQ(after[1], before[1]) << "particles crossed the membrane";
+    EXPECT_LT(grit::analysis::compute_diagnostics(sim.particles()).max_velocity, 0.02) << "the tank has not settled";
 }
 
 TEST(Hydrostatic, OneAndTwoThreadsGiveIdenticalParticles) {

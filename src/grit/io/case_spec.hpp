@@ -1,6 +1,7 @@
 // A case as read from its TOML file: plain data, validated, in SI units. sim/ builds a run from it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -30,6 +31,11 @@ struct ShapeSpec {
     /// its facet normals point to, or away from; a plate the fluid meets on the other side).
     std::shared_ptr<const mesh::TriangleMesh> mesh;
     std::string side = "outside";
+    /// mesh, front/back: the surface is thinner than the kernel somewhere (a splitter edge, a sheet that
+    /// folds back): wall particles are laid behind each facet even where that is in front of another
+    /// part of the sheet, and particles on the two sides do not interact (their wall normals point away
+    /// from each other; second seed paper, sec. 3.2).
+    bool thin = false;
 };
 
 /// A block of particles: fluid, solid or wall.
@@ -288,6 +294,9 @@ struct CaseSpec {
     CouplingSpec coupling;
     bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
     /// Grains at the start ([[grains]]) or fed during the run ([abrasive]).
+    bool has_thin_walls() const {
+        return std::any_of(walls.begin(), walls.end(), [](const BlockSpec& w) { return w.shape.thin; });
+    }
     bool has_grains() const { return !grains.empty() || abrasive.enabled || !grain_feeds.empty(); }
     /// The material of the first grains: the first [[grains]] block's, else the abrasive's.
     int first_grain_material() const {

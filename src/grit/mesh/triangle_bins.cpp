@@ -26,7 +26,21 @@ void TriangleBins::build(const std::vector<std::array<Vec3, 3>>& corners, double
             total *= static_cast<std::int64_t>(std::floor((hi[k] - lo[k]) / c)) + 1;
         return total;
     };
-    while (count(cell_) > max_cells)
+    // Each triangle is listed in every cell its widened box overlaps: fine cells over a large mesh would
+    // list it thousands of times, so the lists are capped too (16 million entries, 64 MB).
+    auto entries = [&](double c) {
+        double total = 0.0;
+        for (const auto& t : corners) {
+            double cells = 1.0;
+            for (int k = 0; k < 3; ++k) {
+                const double extent = std::max({t[0][k], t[1][k], t[2][k]}) - std::min({t[0][k], t[1][k], t[2][k]});
+                cells *= std::floor((extent + 2.0 * reach) / c) + 2.0;
+            }
+            total += cells;
+        }
+        return total;
+    };
+    while (count(cell_) > max_cells || entries(cell_) > 16.0e6)
         cell_ *= 1.5;
     low_ = lo;
     for (int k = 0; k < 3; ++k)

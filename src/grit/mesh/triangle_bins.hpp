@@ -17,7 +17,8 @@ class TriangleBins {
     using Vec3 = core::Vec<3>;
 
     /// Bins `corners` (one triangle each) for points within `reach` of them, in cells of
-    /// `cell_factor` x reach, coarser (x 1.5 at a time) while the grid would pass `max_cells`.
+    /// `cell_factor` x reach, coarser (x 1.5 at a time) while the grid would pass `max_cells` or its lists
+    /// 16 million entries.
     void build(const std::vector<std::array<Vec3, 3>>& corners, double reach, double cell_factor = 2.0,
                std::int64_t max_cells = 2'000'000);
 

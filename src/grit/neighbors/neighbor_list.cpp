@@ -72,7 +72,8 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
 
 template <int Dim>
 void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x,
-                              Index n, double radius, const std::int32_t* phase, const PeriodicBox<Dim>& box) {
+                              Index n, double radius, const std::int32_t* phase, const PeriodicBox<Dim>& box,
+                              const SideSeparation<Dim>* sides) {
     // One scan: each thread lists its contiguous chunk of particles into its own buffer, and the buffers
     // are joined in chunk order (a count pass and a fill pass scanned every cell twice).
     const double r2 = radius * radius;
@@ -86,7 +87,13 @@ void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index
             chunk_begin[static_cast<std::size_t>(chunk)] = begin;
             for (Index i = begin; i < end; ++i) {
                 const auto before = found.size();
-                scan(grid, cell_start, x, i, r2, phase, image, [&](Index j) { found.push_back(j); });
+                if (sides) {
+                    scan(grid, cell_start, x, i, r2, phase, image, [&](Index j) {
+                        if (!sides->apart(i, j)) found.push_back(j);
+                    });
+                } else {
+                    scan(grid, cell_start, x, i, r2, phase, image, [&](Index j) { found.push_back(j); });
+                }
                 offsets_[static_cast<std::size_t>(i) + 1] = static_cast<Index>(found.size() - before);
             }
         });

@@ -13,6 +13,23 @@
 
 namespace grit::neighbors {
 
+/// The two sides of walls thinner than the kernel (second seed paper, sec. 3.2): per particle a unit
+/// normal (zero where it does not matter) and a flag for the wall particles laid for a wall's far side
+/// (a sheet folded back: they stand in the other side's water). A pair is left out when its normals
+/// point away from each other (dot < 0) or, with a far-side particle in it, when they differ by more
+/// than acos(far_cos): fluid by the fold's edge, whose normal is the edge's, belongs to neither side.
+template <int Dim>
+struct SideSeparation {
+    const core::Vec<Dim>* normal = nullptr;
+    const std::int32_t* far_side = nullptr;
+    double far_cos = 0.5;
+    bool apart(Index i, Index j) const {
+        const double c = core::dot(normal[i], normal[j]);
+        return c < 0.0 || ((far_side[i] | far_side[j]) != 0 && c < far_cos && core::norm2(normal[i]) > 0.0 &&
+                           core::norm2(normal[j]) > 0.0);
+    }
+};
+
 template <int Dim>
 class NeighborList {
 public:
@@ -23,9 +40,10 @@ public:
     /// periodic axes `grid` is a covering() grid; with them (`box`), an over_box() grid of the same
     /// periodic axes, cells of at least `radius`, and x[0..n) inside the box along them: cells wrap, and
     /// distances are those of the nearest image. With `phase`, pairs of two fixed wall particles are left
-    /// out: nothing between them is computed.
+    /// out: nothing between them is computed. With `sides`, the pairs it sets apart are left out.
     void build(const CellGrid<Dim>& grid, const std::vector<Index>& cell_start, const Vec* x, Index n,
-               double radius, const std::int32_t* phase = nullptr, const PeriodicBox<Dim>& box = {});
+               double radius, const std::int32_t* phase = nullptr, const PeriodicBox<Dim>& box = {},
+               const SideSeparation<Dim>* sides = nullptr);
 
     /// The lists of the set that kept old[keep[i]] as new[i] (keep ascending): the rows of removed
     /// particles and the entries naming them are dropped, the rest keep their order and stay valid for

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -52,7 +54,10 @@ public:
         grid_ = make_grid(particles.position(), n, radius, box);
         sort_by_cell(grid_, particles.position(), n, order_, cell_start_);
         particles.gather(order_);
-        list_.build(grid_, cell_start_, particles.position(), n, radius, particles.phase(), box);
+        if (refresh_sides_) refresh_sides_(particles);
+        const auto separation = sides(particles);
+        list_.build(grid_, cell_start_, particles.position(), n, radius, particles.phase(), box,
+                    separation.normal ? &separation : nullptr);
         built_generation_ = particles.generation();
         ++builds_;
         return true;
@@ -124,11 +129,34 @@ public:
         for (Index i = 0; i < n; ++i)
             if (order_[static_cast<std::size_t>(i)] != i)
                 throw io::Hdf5Error(group.path() + ": the particles are not in the order of their neighbour lists");
-        list_.build(grid_, cell_start_, reference.data(), n, radius, particles.phase(), box);
+        const auto separation = sides(particles);
+        list_.build(grid_, cell_start_, reference.data(), n, radius, particles.phase(), box,
+                    separation.normal ? &separation : nullptr);
         built_generation_ = particles.generation();
     }
 
+    /// Walls thinner than the kernel: before each build, `refresh` brings the particles' wall normals
+    /// (the vector field `normal_field`) up to date, and the pairs SideSeparation sets apart (with the
+    /// int32 field `far_field` and `far_cos`) are left out of the lists.
+    void separate_sides(std::string normal_field, std::string far_field, double far_cos,
+                        std::function<void(particles::SphParticles<Dim>&)> refresh) {
+        normal_field_ = std::move(normal_field);
+        far_field_ = std::move(far_field);
+        far_cos_ = far_cos;
+        refresh_sides_ = std::move(refresh);
+    }
+
 private:
+    SideSeparation<Dim> sides(const particles::SphParticles<Dim>& particles) const {
+        SideSeparation<Dim> s;
+        const auto& fields = particles.fields();
+        if (normal_field_.empty() || !fields.has(normal_field_) || !fields.has(far_field_)) return s;
+        s.normal = fields.template get<Vec>(normal_field_).data();
+        s.far_side = fields.template get<std::int32_t>(far_field_).data();
+        s.far_cos = far_cos_;
+        return s;
+    }
+
     // Without periodic axes, cubic cells over the particles; with them, the periodic axes of the box in
     // whole cells of at least `radius` (the others over the particles).
     static CellGrid<Dim> make_grid(const Vec* x, Index n, double radius, const PeriodicBox<Dim>& box) {
@@ -144,6 +172,9 @@ private:
     std::vector<Index> order_, cell_start_;
     std::uint64_t built_generation_ = never;
     long builds_ = 0, compactions_ = 0;
+    std::string normal_field_, far_field_;
+    double far_cos_ = 0.5;
+    std::function<void(particles::SphParticles<Dim>&)> refresh_sides_;
 };
 
 }  // namespace grit::neighbors

@@ -37,7 +37,8 @@ using core::to_vec;
 }  // namespace
 
 template <int Dim>
-std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx) {
+std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx,
+                                           WallNormals<Dim>* normals) {
     using Vec = core::Vec<Dim>;
     std::vector<Vec> points;
     if (shape.kind == "box") {
@@ -72,15 +73,36 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
             // outside/inside: a closed mesh; front/back: any mesh, by its facet normals, without wrapping
             // round the rim of an open one.
             const bool closed = shape.side == "outside" || shape.side == "inside";
-            const mesh::SignedDistance distance(*shape.mesh, closed);
+            mesh::SignedDistance distance(*shape.mesh, closed);
             const double t = shape.layers * dx;
             Vec lo = shape.mesh->vertices().front(), hi = lo;
             for (const Vec& v : shape.mesh->vertices())
                 for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+            // The water's side: +1 in front of the facets (particles behind them), -1 behind.
+            const double water = shape.side == "outside" || shape.side == "front" ? -1.0 : 1.0;
+            if (shape.thin) distance.bin(t);
             for_each_lattice_point<3>(lo - Vec::filled(t), hi + Vec::filled(t), dx, [&](const Vec& x) {
                 const auto q = distance.query(x);
-                const double d = shape.side == "outside" || shape.side == "front" ? q.distance : -q.distance;
-                if (d > 0.0 && d <= t && (closed || !q.on_rim)) points.push_back(x);
+                const double d = -water * q.distance;  // > 0 on the particles' side
+                if (d > 0.0 && d <= t && (closed || !q.on_rim)) {
+                    points.push_back(x);
+                    if (shape.thin && normals) {
+                        normals->normal.push_back(q.normal * water);
+                        normals->far_side.push_back(0);
+                    }
+                } else if (shape.thin && d < 0.0) {
+                    // On the water's side of the sheet, yet just behind one of its facets: where the
+                    // sheet folds back (a splitter edge), the wall of the far side. The water on this
+                    // side does not see it: their normals point away from each other.
+                    const Vec n = distance.face_behind(x, water);
+                    if (core::norm2(n) > 0.0) {
+                        points.push_back(x);
+                        if (normals) {
+                            normals->normal.push_back(n);
+                            normals->far_side.push_back(1);
+                        }
+                    }
+                }
             });
         }
     } else if (shape.kind == "tank") {
@@ -106,7 +128,7 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
     return points;
 }
 
-template std::vector<core::Vec<2>> lattice_points<2>(const io::ShapeSpec&, double);
-template std::vector<core::Vec<3>> lattice_points<3>(const io::ShapeSpec&, double);
+template std::vector<core::Vec<2>> lattice_points<2>(const io::ShapeSpec&, double, WallNormals<2>*);
+template std::vector<core::Vec<3>> lattice_points<3>(const io::ShapeSpec&, double, WallNormals<3>*);
 
 }  // namespace grit::sim

@@ -25,6 +25,7 @@
 #include "grit/modules/open_boundaries.hpp"
 #include "grit/modules/isph_fluid.hpp"
 #include "grit/modules/sph_fluid.hpp"
+#include "grit/modules/thin_walls.hpp"
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
@@ -215,6 +216,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         if (has_fluid(spec_)) modules_.push_back(std::make_unique<modules::FluidInSolidModule<Dim>>(state_, setup_));
     }
     if (has_sph_) modules_.push_back(std::make_unique<modules::OpenBoundariesModule<Dim>>(state_, setup_));
+    if (spec_.has_thin_walls()) modules_.push_back(std::make_unique<modules::ThinWallsModule<Dim>>(state_, setup_));
 
     build_particles();
     for (auto& m : modules_) m->initialise();
@@ -284,7 +286,8 @@ void Simulation<Dim>::build_particles() {
     auto& particles = state_.particles;
 
     auto add_block = [&](const io::BlockSpec& b, Phase phase) {
-        const auto points = lattice_points<Dim>(b.shape, dx);
+        WallNormals<Dim> normals;  // thin walls: each particle's wall normal (ThinWallsModule)
+        const auto points = lattice_points<Dim>(b.shape, dx, &normals);
         if (points.empty())
             throw core::InputError(fmt::format("{}: the shape holds no particle at numerics.particle_spacing = {} m",
                                                b.key, dx));
@@ -331,6 +334,13 @@ void Simulation<Dim>::build_particles() {
             m[i] = rho0 * cell_volume;
             ph[i] = static_cast<std::int32_t>(phase);
             mi[i] = b.material;
+        }
+        if (!normals.normal.empty()) {
+            auto& fields = particles.fields();
+            Vec* n = fields.template get<Vec>(modules::ThinWallsModule<Dim>::normal_field).data();
+            std::int32_t* far = fields.template get<std::int32_t>(modules::ThinWallsModule<Dim>::far_field).data();
+            std::copy(normals.normal.begin(), normals.normal.end(), n + first);
+            std::copy(normals.far_side.begin(), normals.far_side.end(), far + first);
         }
     };
     for (const auto& f : spec_.fluids) add_block(f, Phase::fluid);
