@@ -218,6 +218,9 @@ expect_input_error "degenerate STL facet" "$W/flat.stl" "facet 1 is degenerate" 
 expect_input_error "open STL where it must be watertight" "plate.stl" "16 open edges" "watertight" -- \
     run "$WEAR" --set 'mesh[0].watertight=true'
 expect_input_error "unknown wear model" "mesh[0].wear_model" "archard" -- run "$WEAR" --set 'mesh[0].wear_model=archard'
+MEMBRANE=$ROOT/cases/hydrostatic_membrane_3d/case.toml
+expect_input_error "thin wall round a closed side" "wall[1].thin" "side = \"front\" or \"back\"" "\"outside\"" -- \
+    run "$MEMBRANE" --set 'wall[1].side=outside'
 
 # Too many particles: refused before anything is allocated (it used to end in std::bad_alloc, exit 1).
 DAM=$ROOT/cases/dambreak_2d/case.toml

@@ -549,12 +549,12 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank, cons
     if (shape.kind == "mesh") {
         // Wall particles are laid by the signed distance: outside/inside need a closed surface.
         shape.side = s.choice("side", "outside", {"outside", "inside", "front", "back"});
-        shape.mesh = read_placed_mesh(s, folder, shape.side == "outside" || shape.side == "inside");
-        shape.layers = s.integer_or("layers", 3, 1, 20);
         shape.thin = s.flag_or("thin", false);
         if (shape.thin && shape.side != "front" && shape.side != "back")
             s.fail("thin", fmt::format("a thin wall has water on the side its facets face or on the other, so it needs "
                                        "side = \"front\" or \"back\", not \"{}\"", shape.side));
+        shape.mesh = read_placed_mesh(s, folder, shape.side == "outside" || shape.side == "inside");
+        shape.layers = s.integer_or("layers", 3, 1, 20);
     } else if (shape.kind == "box" || shape.kind == "tank") {
         shape.min = s.vector("min", dim, "[m]");
         shape.max = s.vector("max", dim, "[m]");
