@@ -45,8 +45,8 @@ void ThinWallsModule<Dim>::refresh(particles::SphParticles<Dim>& particles) {
             // The normal at the closest point of the nearest thin wall within reach, turned to its water.
             // Of two walls on one sheet (a membrane, water on both sides), the one whose water the
             // particle is in. A particle behind a one-sided sheet (water pressed into a splitter's cusp)
-            // gets none: it sees every wall particle around it, both sides' far walls too, and is
-            // pushed back out; with its side's normal it would see a far wall beside it but nothing ahead.
+            // gets none, so that it sees every wall particle round it, both sides' far walls too: of the
+            // rules tried this let the least water into the cusp (docs/theory.md "Thin walls").
             double best = std::numeric_limits<double>::infinity();
             bool best_wet = false;
             Vec n = Vec::zero();
