@@ -108,7 +108,7 @@ void IsphModule<Dim>::predict() {
     // v* = v^n + dt (g + viscous terms)
     auto& ps = state_.particles;
     const Index n = ps.size();
-    sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, viscous_, workspace_, nullptr,
+    sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, viscous_, workspace_, pairs_, nullptr,
                              correction_.empty() ? nullptr : correction_.data());
     const double dt = state_.clock.dt;
     const auto* v = ps.velocity();

@@ -42,6 +42,7 @@ class IsphModule final : public sim::Module<Dim> {
     sph::PressureProjection<Dim> projection_;
     sph::ShiftingSettings<Dim> shifting_;
     sph::SphWorkspace workspace_;
+    sph::FluidPairs<Dim> pairs_;  ///< each fluid-fluid pair once: half lists and sums
     std::vector<sph::GradientCorrection<Dim>> correction_;  ///< L_a (numerics.kernel_correction), else empty
     std::vector<core::Vec<Dim>> v_star_, pressure_acc_, shift_;
     std::vector<double> av_limit_;  ///< per material: 0.125 h^2 / nu of its

@@ -63,7 +63,7 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
         workspace_generation_ = ps.generation();
     }, true);
     pipeline.add(Hook::force, "sph_fluid", [this, &ps] {
-        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace(), porosity(),
+        sph::compute_fluid_rates(ps, state_.neighbors.list(), setup_.kernel, fluid_, workspace(), pairs_, porosity(),
                                  correction_.empty() ? nullptr : correction_.data());
     }, true);
     pipeline.add(Hook::integrate, "integrate_update", [this] { integrate_update(); });

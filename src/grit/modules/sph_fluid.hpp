@@ -40,6 +40,7 @@ private:
     sph::FluidRateParameters<Dim> fluid_;
     std::vector<double> signal_speed_;  ///< per material: the wave speed of the CFL condition [m/s]
     sph::SphWorkspace workspace_;
+    sph::FluidPairs<Dim> pairs_;  ///< each fluid-fluid pair once: half lists and sums
     std::uint64_t workspace_generation_ = 0;
     std::vector<sph::GradientCorrection<Dim>> correction_;  ///< L_a (numerics.kernel_correction), else empty
     std::vector<double> shepard_;                            ///< scratch of the Shepard filter

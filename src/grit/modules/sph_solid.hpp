@@ -31,7 +31,7 @@ private:
     const sim::RunSetup<Dim>& setup_;
     const SphModule<Dim>& sph_;
     sph::SolidRateParameters<Dim> parameters_;
-    sph::SolidWorkspace workspace_;
+    sph::SolidWorkspace<Dim> workspace_;
     std::uint64_t workspace_generation_ = 0;
     std::vector<bool> brittle_;  ///< per material: a JH-2 solid (fractured particles stay until detached)
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart

@@ -2,11 +2,17 @@
 #include "grit/neighbors/neighbor_list.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <utility>
 
 #include "grit/parallel/parallel.hpp"
 
 namespace grit::neighbors {
+
+namespace {
+std::atomic<std::uint64_t> last_version{0};  // shared by all lists, so no two lists have one version
+std::uint64_t next_version() { return ++last_version; }
+}  // namespace
 
 template <int Dim>
 template <class Image, class F>
@@ -107,6 +113,7 @@ void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index
                   indices_.begin() + offsets_[static_cast<std::size_t>(chunk_begin[c])]);
     }
     reference_positions_.assign(x, x + n);
+    version_ = next_version();
 }
 
 template <int Dim>
@@ -136,6 +143,7 @@ void NeighborList<Dim>::compact(const std::vector<Index>& keep) {
     offsets_ = std::move(offsets);
     indices_ = std::move(indices);
     reference_positions_ = std::move(reference);
+    version_ = next_version();
 }
 
 template <int Dim>
@@ -144,6 +152,7 @@ void NeighborList<Dim>::assign(std::vector<Index> offsets, std::vector<Index> in
     offsets_ = std::move(offsets);
     indices_ = std::move(indices);
     reference_positions_ = std::move(reference_positions);
+    version_ = next_version();
 }
 
 template <int Dim>

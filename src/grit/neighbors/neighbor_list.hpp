@@ -4,6 +4,7 @@
 // a periodic face are listed too (their distance is that of the nearest image).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "grit/core/types.hpp"
@@ -60,6 +61,10 @@ public:
     const Index* offsets() const noexcept { return offsets_.data(); }
     std::size_t pair_count() const noexcept { return indices_.size(); }
 
+    /// Changes whenever the lists do (build, compact, assign), and is never the same for two lists:
+    /// what is cut from the lists (HalfLists) is cut again only when it changed.
+    std::uint64_t version() const noexcept { return version_; }
+
     /// The positions the lists were built at (one per particle).
     const Vec* reference_positions() const noexcept { return reference_positions_.data(); }
 
@@ -75,6 +80,7 @@ private:
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;
     std::vector<Vec> reference_positions_;
+    std::uint64_t version_ = 0;
     std::vector<std::vector<Index>> chunk_entries_;  // build scratch: the entries each thread found
 };
 

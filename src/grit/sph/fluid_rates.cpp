@@ -6,6 +6,7 @@
 #include "grit/parallel/parallel.hpp"
 #include <algorithm>
 
+#include "grit/neighbors/half_lists.hpp"
 #include "grit/sph/artificial_viscosity.hpp"
 
 namespace grit::sph {
@@ -117,6 +118,146 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     });
 }
 
+// The same sums with each fluid-fluid pair evaluated once (neighbors::sum_pairs_once): the pair's terms
+// go to a with m_b, V_b and to b with -m_a, V_a (momentum and mass conserved pair by pair); the pairs
+// with walls and solids are one-sided, as in the gather loop. Without the kernel-gradient correction
+// only: with it, a pair's two gradients differ (L_a grad W, L_b grad W).
+template <int Dim, class K, bool Porous, class Image>
+void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, const FluidRateParameters<Dim>& prm,
+                            const SphWorkspace& work, const double* porosity, FluidPairs<Dim>& pairs,
+                            const Image image) {
+    using Vec = core::Vec<Dim>;
+    using Sum = FluidSum<Dim>;
+    const Vec* x = ps.position();
+    const Vec* v = ps.velocity();
+    const double* rho = ps.density();
+    const double* m = ps.mass();
+    const std::int32_t* phase = ps.phase();
+    const std::int32_t* mat = ps.material();
+    Vec* acc = ps.acceleration();
+    double* drho = ps.density_rate();
+    const neighbors::HalfLists& lists = pairs.lists;
+    const Index* upper = lists.upper();
+    const Index* other = lists.other();
+    const PairCoefficients* coef = prm.materials.data();
+    const double* p_term = work.pressure_term.data();
+    const double* volume = work.volume.data();
+
+    const double h = kernel.h;
+    const double eps_h2 = 0.01 * h * h;
+    const double delta = prm.density_diffusion;
+    const Vec g = prm.gravity;
+    const Vec g_hydrostatic = prm.hydrostatic_gravity;
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    // rho0 / c0^2 of each material: the hydrostatic density difference per unit of g . x_ab.
+    std::vector<double> hydrostatic_scales;
+    for (const PairCoefficients& c : prm.materials)
+        hydrostatic_scales.push_back(c.reference_density / (c.sound_speed * c.sound_speed));
+    const double* hydrostatic_scale = hydrostatic_scales.data();
+    const std::size_t row_length = static_cast<std::size_t>(lists.longest_upper());
+
+    auto visit = [&](Index a, Sum& sum_a, auto&& share) {
+        // b's shares of a's pairs, computed in the vector pass, added in a scalar one (scatter).
+        thread_local std::vector<double> rows;
+        rows.resize(row_length * (Dim + 2));
+        double* share_v[Dim];
+        for (int d = 0; d < Dim; ++d) share_v[d] = rows.data() + row_length * d;
+        double* share_continuity = rows.data() + row_length * Dim;
+        double* share_diffusion = rows.data() + row_length * (Dim + 1);
+
+        const Vec xa = x[a];
+        const Vec va = v[a];
+        const double rho_a = rho[a];
+        const double rho_a_true = Porous ? rho_a / porosity[a] : rho_a;
+        const double p_term_a = p_term[a];
+        const double inv_rho_a = 1.0 / rho_a;
+        const PairCoefficients& ca = coef[mat[a]];
+        const double scale_a = hydrostatic_scale[mat[a]];
+
+        double dv[Dim] = {};
+        double continuity = 0.0, diffusion = 0.0;
+        const Index first = lists.upper_begin(a), last = lists.upper_end(a);
+#pragma omp simd reduction(+ : dv[:Dim], continuity, diffusion)
+        for (Index k = first; k < last; ++k) {
+            const Index b = upper[k];
+            const Index j = k - first;
+            const Vec xab = image(xa - x[b]);
+            const double r2 = core::norm2(xab);
+            const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_a W_ab = xab * f
+            const Vec vab = va - v[b];
+            const double vx = core::dot(vab, xab);
+            const PairCoefficients& cb = coef[mat[b]];
+            const double inv_r2 = 1.0 / (r2 + eps_h2);
+            const double inv_rho_sum = 1.0 / (rho_a + rho[b]);
+            // Pressure (eq. 23) and artificial viscosity (eqs. 26-27) along grad W, laminar viscosity
+            // (eq. 25, Lo & Shao 2002) along v_ab: the force per unit mass of each particle's partner.
+            const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
+            const double along_x = (-(p_term_a + p_term[b]) - pi_ab) * f;
+            const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
+            const double along_v = 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
+            const double vx_f = vx * f;  // v_ab . grad_a W_ab, the same seen from b
+            // Density diffusion, less its hydrostatic part (rho^H_a - rho^H_b), each side with its own rho0/c0^2.
+            const double laplacian = r2 * f * inv_r2;
+            const double g_x = core::dot(g_hydrostatic, xab);
+            const double rho_b_true = Porous ? rho[b] / porosity[b] : rho[b];
+            const double m_b = m[b], volume_b = volume[b];
+            for (int d = 0; d < Dim; ++d) {
+                const double force = xab[d] * along_x + vab[d] * along_v;
+                dv[d] += m_b * force;
+                share_v[d][j] = force;
+            }
+            continuity += volume_b * vx_f;  // eq. (22)
+            share_continuity[j] = vx_f;
+            diffusion += volume_b * ((rho_a_true - rho_b_true) - scale_a * g_x) * laplacian;
+            share_diffusion[j] = ((rho_b_true - rho_a_true) + hydrostatic_scale[mat[b]] * g_x) * laplacian;
+        }
+        const double m_a = m[a], volume_a = volume[a];
+        for (Index k = first; k < last; ++k) {
+            const Index j = k - first;
+            Sum& sum_b = share(upper[k]);
+            for (int d = 0; d < Dim; ++d) sum_b.dv[d] -= m_a * share_v[d][j];
+            sum_b.continuity += volume_a * share_continuity[j];
+            sum_b.diffusion += volume_a * share_diffusion[j];
+        }
+
+        // Walls and solids, one-sided: pressure (against a solid in the multi-phase form of Colagrossi &
+        // Landrini 2003), artificial and laminar viscosity and continuity, no density diffusion.
+        const Index first_other = lists.other_begin(a), last_other = lists.other_end(a);
+#pragma omp simd reduction(+ : dv[:Dim], continuity)
+        for (Index k = first_other; k < last_other; ++k) {
+            const Index b = other[k];
+            const Vec xab = image(xa - x[b]);
+            const double r2 = core::norm2(xab);
+            const double f = kernel.gradient_factor(std::sqrt(r2));
+            const Vec vab = va - v[b];
+            const double vx = core::dot(vab, xab);
+            const PairCoefficients& cb = coef[mat[b]];
+            const double inv_r2 = 1.0 / (r2 + eps_h2);
+            const double inv_rho_sum = 1.0 / (rho_a + rho[b]);
+            continuity += volume[b] * vx * f;
+            const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
+            const double ratio = rho[b] * inv_rho_a;  // rho_b / rho_a
+            const double pressure = phase[b] == solid ? (p_term_a / ratio + p_term[b] * ratio) : (p_term_a + p_term[b]);
+            const double along_x = m[b] * (-pressure - pi_ab) * f;
+            const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
+            const double along_v = m[b] * 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
+            for (int d = 0; d < Dim; ++d) dv[d] += xab[d] * along_x + vab[d] * along_v;
+        }
+        for (int d = 0; d < Dim; ++d) sum_a.dv[d] += dv[d];
+        sum_a.continuity += continuity;
+        sum_a.diffusion += diffusion;
+    };
+    auto finish = [&](Index i, const Sum& total) {
+        Vec a = g;
+        for (int d = 0; d < Dim; ++d) a[d] += total.dv[d];
+        acc[i] = a;
+        // With grains, d(rho_bar)/dt takes eps_i times the diffusion of rho.
+        const double diffusion_scale = 2.0 * delta * h * coef[mat[i]].sound_speed;
+        drho[i] = rho[i] * total.continuity + (Porous ? porosity[i] : 1.0) * diffusion_scale * total.diffusion;
+    };
+    neighbors::sum_pairs_once(lists, pairs.own, pairs.spill, visit, finish);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -139,8 +280,11 @@ void prepare_sph_workspace(const particles::SphParticles<Dim>& ps, SphWorkspace&
 template <int Dim>
 void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const FluidRateParameters<Dim>& parameters,
-                         const SphWorkspace& workspace, const double* porosity,
+                         const SphWorkspace& workspace, FluidPairs<Dim>& pairs, const double* porosity,
                          const GradientCorrection<Dim>* L) {
+    if (!L)
+        pairs.lists.update(neighbors.offsets(), neighbors.indices(), neighbors.particle_count(), neighbors.version(),
+                           particles.phase(), static_cast<std::int32_t>(Phase::fluid));
     std::visit(
         [&](const auto& k) {
             using KernelType = std::decay_t<decltype(k)>;
@@ -148,15 +292,15 @@ void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbor
                 if (porosity && L)
                     fluid_rates_loop<Dim, KernelType, true, true>(particles, neighbors, k, parameters, workspace,
                                                                   porosity, L, image);
-                else if (porosity)
-                    fluid_rates_loop<Dim, KernelType, true, false>(particles, neighbors, k, parameters, workspace,
-                                                                   porosity, nullptr, image);
                 else if (L)
                     fluid_rates_loop<Dim, KernelType, false, true>(particles, neighbors, k, parameters, workspace,
                                                                    nullptr, L, image);
+                else if (porosity)
+                    fluid_rates_pairs_once<Dim, KernelType, true>(particles, k, parameters, workspace, porosity,
+                                                                  pairs, image);
                 else
-                    fluid_rates_loop<Dim, KernelType, false, false>(particles, neighbors, k, parameters, workspace,
-                                                                    nullptr, nullptr, image);
+                    fluid_rates_pairs_once<Dim, KernelType, false>(particles, k, parameters, workspace, nullptr,
+                                                                   pairs, image);
             });
         },
         kernel);
@@ -166,9 +310,9 @@ template void prepare_sph_workspace<2>(const particles::SphParticles<2>&, SphWor
 template void prepare_sph_workspace<3>(const particles::SphParticles<3>&, SphWorkspace&);
 template void compute_fluid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&,
                                      const Kernel<2>&, const FluidRateParameters<2>&, const SphWorkspace&,
-                                     const double*, const GradientCorrection<2>*);
+                                     FluidPairs<2>&, const double*, const GradientCorrection<2>*);
 template void compute_fluid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&,
                                      const Kernel<3>&, const FluidRateParameters<3>&, const SphWorkspace&,
-                                     const double*, const GradientCorrection<3>*);
+                                     FluidPairs<3>&, const double*, const GradientCorrection<3>*);
 
 }  // namespace grit::sph

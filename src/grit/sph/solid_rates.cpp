@@ -1,9 +1,11 @@
-// The solid SPH sums, one gather loop over solid particles, dispatched once on the kernel type.
+// The solid SPH sums, each solid-solid pair once (neighbors::sum_pairs_once), dispatched once on the
+// kernel type.
 #include "grit/sph/solid_rates.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "grit/neighbors/half_lists.hpp"
 #include "grit/parallel/parallel.hpp"
 #include <Eigen/Dense>
 
@@ -17,7 +19,7 @@ namespace {
 
 template <int Dim, class K>
 void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const SolidRateParameters<Dim>& prm, const SphWorkspace& sph, SolidWorkspace& work) {
+                      const SolidRateParameters<Dim>& prm, const SphWorkspace& sph, SolidWorkspace<Dim>& work) {
     using Vec = core::Vec<Dim>;
     using core::SymTensor3;
     const Index n = ps.size();
@@ -31,7 +33,6 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const SymTensor3* tau = ps.fields().template get<SymTensor3>("deviatoric_stress").data();
     Vec* acc = ps.acceleration();
     double* drho = ps.density_rate();
-    const Index* nbr = nl.indices();
     const PairCoefficients* coef = prm.materials.data();
     const double* p_term = sph.pressure_term.data();
     const double* volume = sph.volume.data();
@@ -77,39 +78,60 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             r[5] = art.zx;
         }
     });
+    // Each solid-solid pair once (neighbors::sum_pairs_once): the solid neighbours of higher index, and
+    // the fluid and wall neighbours, one-sided. The kernel is evaluated once per pair, in the correction
+    // pass, for the main pass too (it was 20 % of that pass).
+    neighbors::HalfLists& lists = work.lists;
+    lists.update(nl.offsets(), nl.indices(), n, nl.version(), phase, solid);
+    const Index* upper = lists.upper();
+    const Index* other = lists.other();
+    const double inv_w_dx = 1.0 / kernel.value(prm.spacing);
+    const double as_n = prm.artificial_stress_exponent;
+    work.upper_gradient.resize(lists.upper_size());
+    work.upper_stress_weight.resize(eps_as > 0.0 ? lists.upper_size() : 0);
+    work.other_gradient.resize(lists.other_size());
+    double* upper_f = work.upper_gradient.data();
+    double* upper_w = work.upper_stress_weight.data();
+    double* other_f = work.other_gradient.data();
+
     // Kernel gradient correction (Randles & Libersky 1996; second seed paper eq. 8), per solid particle:
     // L = [sum_b V_b grad_a W_ab (x) (x_b - x_a)]^-1 over solid neighbours. With it, eq. (31) is exact
     // for linear velocity fields and the stress divergence exact for linear stress fields, also at free
     // surfaces, where plain sums see half a kernel and halve tangential derivatives (a bending plate
-    // then turns soft).
+    // then turns soft). The moment x_ab (x) x_ab f is the same seen from b: each pair adds it once,
+    // times V_b to a and V_a to b.
     work.correction.resize(static_cast<std::size_t>(n));
     SymTensor3* corr = work.correction.data();
-    // The kernel is evaluated once per pair here, for the main pass too (it was 20 % of that pass).
-    const double inv_w_dx = 1.0 / kernel.value(prm.spacing);
-    const double as_n = prm.artificial_stress_exponent;
-    const auto entries = static_cast<std::size_t>(nl.begin(n));
-    work.pair_gradient.resize(entries);
-    work.pair_stress_weight.resize(eps_as > 0.0 ? entries : 0);
-    double* pair_f = work.pair_gradient.data();
-    double* pair_w = work.pair_stress_weight.data();
-    parallel::for_each_dynamic(n, [&](Index a) {
-        if (phase[a] != solid) return;
-        double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
-        for (Index k = nl.begin(a); k < nl.end(a); ++k) {
-            const Index b = nbr[k];
-            const Vec xab = x[a] - x[b];
+    auto moment_visit = [&](Index a, MomentSum<Dim>& sum_a, auto&& share) {
+        const Vec xa = x[a];
+        for (Index k = lists.upper_begin(a); k < lists.upper_end(a); ++k) {
+            const Index b = upper[k];
+            const Vec xab = xa - x[b];
             const double r = std::sqrt(core::norm2(xab));
             const double f = kernel.gradient_factor(r);
-            pair_f[k] = f;
+            upper_f[k] = f;
             if (has_art[a] | has_art[b]) {  // the weight only matters where a pair has R != 0 (tension)
                 const double ratio = kernel.value(r) * inv_w_dx;
                 const double ratio2 = ratio * ratio;
-                pair_w[k] = as_n == 4.0 ? ratio2 * ratio2 : std::pow(ratio, as_n);
+                upper_w[k] = as_n == 4.0 ? ratio2 * ratio2 : std::pow(ratio, as_n);
             }
-            if (phase[b] != solid) continue;
+            MomentSum<Dim>& sum_b = share(b);
+            int e = 0;
             for (int i = 0; i < Dim; ++i)
-                for (int j = 0; j < Dim; ++j) mm[i][j] -= volume[b] * f * xab[i] * xab[j];
+                for (int j = i; j < Dim; ++j, ++e) {
+                    const double moment = f * xab[i] * xab[j];
+                    sum_a.m[e] -= volume[b] * moment;
+                    sum_b.m[e] -= volume[a] * moment;
+                }
         }
+        for (Index k = lists.other_begin(a); k < lists.other_end(a); ++k)
+            other_f[k] = kernel.gradient_factor(std::sqrt(core::norm2(xa - x[other[k]])));
+    };
+    auto moment_finish = [&](Index a, const MomentSum<Dim>& sum) {
+        double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+        int e = 0;
+        for (int i = 0; i < Dim; ++i)
+            for (int j = i; j < Dim; ++j, ++e) mm[i][j] = mm[j][i] = sum.m[e];
         SymTensor3 l = SymTensor3::identity();  // where the moment matrix is singular (an isolated particle)
         if constexpr (Dim == 2) {
             const double det = mm[0][0] * mm[1][1] - mm[0][1] * mm[1][0];
@@ -130,11 +152,13 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         double* out = packed_m + static_cast<std::size_t>(a) * mm_size;
         for (int i = 0; i < Dim; ++i)
             for (int j = 0; j < Dim; ++j) {
-                double sum = 0.0;
-                for (int k = 0; k < Dim; ++k) sum += sm[i][k] * lm[k][j];
-                out[i * Dim + j] = sum;
+                double sum_ij = 0.0;
+                for (int k = 0; k < Dim; ++k) sum_ij += sm[i][k] * lm[k][j];
+                out[i * Dim + j] = sum_ij;
             }
-    });
+    };
+    neighbors::sum_pairs_once(lists, work.moment_own, work.moment_spill, moment_visit, moment_finish);
+
     // M . g and (R_a + R_b) . g over the packed layouts.
     auto m_dot = [](const double* mm, const Vec& grad) {
         Vec out;
@@ -165,82 +189,115 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     const Vec g = prm.gravity;
     const auto wall = static_cast<std::int32_t>(Phase::wall);
 
-    parallel::for_each_dynamic(n, [&](Index a) {
-        if (phase[a] != solid) return;
+    auto visit = [&](Index a, SolidSum<Dim>& sum_a, auto&& share) {
         const Vec xa = x[a];
         const Vec va = v[a];
         const std::uint8_t has_art_a = has_art[a];
         const double rho_a = rho[a];
         const double p_term_a = p_term[a];
+        const double m_a = m[a], volume_a = volume[a];
         const PairCoefficients& ca = coef[mat[a]];
         const SymTensor3 la = corr[a];
-        const double* m_a = packed_m + static_cast<std::size_t>(a) * mm_size;  // (sigma_a / rho_a^2) L_a
+        const double* m_pack_a = packed_m + static_cast<std::size_t>(a) * mm_size;  // (sigma_a / rho_a^2) L_a
         const double* r_a = packed_r + static_cast<std::size_t>(a) * r_size;
 
         Vec dv = Vec::zero();
         double continuity = 0.0, work_rate = 0.0;
         SymTensor3 grad_v_sym = SymTensor3::zero();
         material::Spin w{};
-        for (Index k = nl.begin(a); k < nl.end(a); ++k) {
-            const Index b = nbr[k];
-            const double f = pair_f[k];
+        // Between solids, eq. (29) with the corrected kernel gradient of each particle:
+        // sum_b m_b [sigma_a/rho_a^2 L_a + sigma_b/rho_b^2 L_b] grad W, plus the artificial viscosity and
+        // stress: the same force per unit mass of the partner on both sides, with opposite signs.
+        for (Index k = lists.upper_begin(a); k < lists.upper_end(a); ++k) {
+            const double f = upper_f[k];
             if (f == 0.0) continue;
+            const Index b = upper[k];
             const Vec xab = xa - x[b];
             const double r2 = core::norm2(xab);
             const Vec vab = va - v[b];
             const double vx = core::dot(vab, xab);
-            const double volume_b = volume[b];
-            const PairCoefficients& cb = coef[mat[b]];
+            const double m_b = m[b];
+            SolidSum<Dim>& sum_b = share(b);
+            if (vx < 0.0) {  // artificial viscosity (eq. 29), zero for receding pairs
+                const double pi_ab =
+                    artificial_viscosity(h, vx, 1.0 / (r2 + eps_h2), 1.0 / (rho_a + rho[b]), ca, coef[mat[b]]);
+                const Vec along = xab * (pi_ab * f);
+                dv -= along * m_b;
+                sum_b.dv += along * m_a;
+                work_rate += 0.5 * m_b * pi_ab * vx * f;
+                sum_b.work += 0.5 * m_a * pi_ab * vx * f;
+            }
+            const Vec grad = xab * f;
+            const double* m_pack_b = packed_m + static_cast<std::size_t>(b) * mm_size;
+            const Vec own_a = m_dot(m_pack_a, grad);  // sigma_a/rho_a^2 L_a grad W
+            const Vec own_b = m_dot(m_pack_b, grad);  // minus b's own term (grad_b W_ba = -grad)
+            Vec force = own_a + own_b;
+            if (has_art_a | has_art[b]) {
+                const Vec as_force = r_sum_dot(r_a, packed_r + static_cast<std::size_t>(b) * r_size, upper_w[k], grad);
+                force += as_force;
+                // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.
+                const double as_work = core::dot(as_force, vab);
+                work_rate -= 0.5 * m_b * as_work;
+                sum_b.work -= 0.5 * m_a * as_work;
+            }
+            dv += force * m_b;
+            sum_b.dv -= force * m_a;
+            // The matching internal-energy rates, -m_b sigma_a/rho_a^2 : (v_ab (x) L_a grad W) and b's
+            // likewise: with the momentum above, kinetic + internal energy is conserved pair by pair.
+            work_rate -= m_b * core::dot(vab, own_a);
+            sum_b.work -= m_a * core::dot(vab, own_b);
 
-            // Artificial viscosity with every neighbour (eq. 29), along the plain kernel gradient; zero for
-            // receding pairs, which skip its two divisions.
+            // Strain rate and spin, eq. (31), each with its own corrected gradient: a with v_ba = -v_ab
+            // and L_a grad W, b with v_ab and L_b grad_b W_ba = -L_b grad W.
+            const Vec u_a = vab * (-volume[b]);
+            const Vec grad_a = dot(la, grad);
+            add_symmetric_outer(grad_v_sym, u_a, grad_a);
+            add_skew_outer(w, u_a, grad_a);
+            const Vec u_b = vab * (-volume_a);
+            const Vec grad_b = dot(corr[b], grad);
+            add_symmetric_outer(sum_b.grad_v, u_b, grad_b);
+            add_skew_outer(sum_b.spin, u_b, grad_b);
+        }
+        // Fluid and wall neighbours, one-sided: pressure, in the multi-phase form (p_a + p_b)/(rho_a rho_b)
+        // of Colagrossi & Landrini (2003) across a fluid-solid interface, and artificial viscosity.
+        for (Index k = lists.other_begin(a); k < lists.other_end(a); ++k) {
+            const double f = other_f[k];
+            if (f == 0.0) continue;
+            const Index b = other[k];
+            const Vec xab = xa - x[b];
+            const double r2 = core::norm2(xab);
+            const Vec vab = va - v[b];
+            const double vx = core::dot(vab, xab);
             if (vx < 0.0) {
-                const double pi_ab = artificial_viscosity(h, vx, 1.0 / (r2 + eps_h2), 1.0 / (rho_a + rho[b]), ca, cb);
+                const double pi_ab =
+                    artificial_viscosity(h, vx, 1.0 / (r2 + eps_h2), 1.0 / (rho_a + rho[b]), ca, coef[mat[b]]);
                 dv += xab * (-m[b] * pi_ab * f);
                 work_rate += 0.5 * m[b] * pi_ab * vx * f;
             }
-
-            if (phase[b] != solid) {
-                // Pressure from fluid and wall neighbours; the multi-phase form (p_a + p_b)/(rho_a rho_b)
-                // of Colagrossi & Landrini (2003) across a fluid-solid interface.
-                const bool is_wall = phase[b] == wall;
-                const double pressure = is_wall ? (p_term_a + p_term[b])
-                                                : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
-                dv += xab * (-m[b] * pressure * f);
-                work_rate += 0.5 * m[b] * pressure * vx * f;
-                if (is_wall) continuity += volume_b * vx * f;  // eq. (28) against walls
-                continue;
-            }
-            // Between solids, eq. (29) with the corrected kernel gradient of each particle:
-            // sum_b m_b [sigma_a/rho_a^2 L_a + sigma_b/rho_b^2 L_b] grad W (antisymmetric per pair, so
-            // momentum is conserved), plus the artificial stress (zero where both R are: compression).
-            const Vec grad = xab * f;
-            const Vec ca_grad = dot(la, grad);  // L_a grad W
-            const Vec own = m_dot(m_a, grad);   // sigma_a/rho_a^2 L_a grad W
-            Vec force = own + m_dot(packed_m + static_cast<std::size_t>(b) * mm_size, grad);
-            if (has_art_a | has_art[b]) {
-                const Vec as_force = r_sum_dot(r_a, packed_r + static_cast<std::size_t>(b) * r_size, pair_w[k], grad);
-                force += as_force;
-                // Its work, shared by the pair like the artificial viscosity's, keeps energy booked.
-                work_rate -= 0.5 * m[b] * core::dot(as_force, vab);
-            }
-            dv += force * m[b];
-            // The matching internal-energy rate, -m_b sigma_a/rho_a^2 : (v_ab (x) L_a grad W): with the
-            // momentum above, kinetic + internal energy is conserved pair by pair.
-            work_rate -= m[b] * core::dot(vab, own);
-
-            // Strain rate and spin, eq. (31), with v_ba = -v_ab and the corrected gradient L_a grad W.
-            const Vec u = vab * (-volume_b);
-            add_symmetric_outer(grad_v_sym, u, ca_grad);
-            add_skew_outer(w, u, ca_grad);
+            const bool is_wall = phase[b] == wall;
+            const double pressure = is_wall ? (p_term_a + p_term[b])
+                                            : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
+            dv += xab * (-m[b] * pressure * f);
+            work_rate += 0.5 * m[b] * pressure * vx * f;
+            if (is_wall) continuity += volume[b] * vx * f;  // eq. (28) against walls
         }
-        drho[a] = rho_a * (continuity - grad_v_sym.trace());
-        acc[a] = dv + g;
-        strain_rate[a] = grad_v_sym;
-        spin[a] = w;
+        sum_a.dv += dv;
+        sum_a.continuity += continuity;
+        sum_a.grad_v += grad_v_sym;
+        sum_a.spin.xy += w.xy;
+        sum_a.spin.yz += w.yz;
+        sum_a.spin.zx += w.zx;
+        sum_a.work += work_rate;
+    };
+    auto finish = [&](Index a, const SolidSum<Dim>& total) {
+        drho[a] = rho[a] * (total.continuity - total.grad_v.trace());
+        acc[a] = total.dv + g;
+        strain_rate[a] = total.grad_v;
+        spin[a] = total.spin;
         // Internal energy: work of the stresses and artificial-viscosity heating.
-        de[a] = work_rate;
-    });
+        de[a] = total.work;
+    };
+    neighbors::sum_pairs_once(lists, work.own, work.spill, visit, finish);
 }
 
 }  // namespace
@@ -248,13 +305,13 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 template <int Dim>
 void compute_solid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const SolidRateParameters<Dim>& parameters,
-                         const SphWorkspace& sph, SolidWorkspace& workspace) {
+                         const SphWorkspace& sph, SolidWorkspace<Dim>& workspace) {
     std::visit([&](const auto& k) { solid_rates_loop(particles, neighbors, k, parameters, sph, workspace); }, kernel);
 }
 
 template void compute_solid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&, const Kernel<2>&,
-                                     const SolidRateParameters<2>&, const SphWorkspace&, SolidWorkspace&);
+                                     const SolidRateParameters<2>&, const SphWorkspace&, SolidWorkspace<2>&);
 template void compute_solid_rates<3>(particles::SphParticles<3>&, const neighbors::NeighborList<3>&, const Kernel<3>&,
-                                     const SolidRateParameters<3>&, const SphWorkspace&, SolidWorkspace&);
+                                     const SolidRateParameters<3>&, const SphWorkspace&, SolidWorkspace<3>&);
 
 }  // namespace grit::sph
