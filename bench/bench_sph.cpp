@@ -1,5 +1,6 @@
-// Throughput benchmarks: the 2D dam break at ~10k, 50k and 200k fluid particles and the 3D dam break at
-// ~50k, at 1 and 2 threads. Counters: particle-steps per second (all particles, walls included, as
+// Throughput benchmarks: the 2D dam break at ~10k, 50k, 200k and 1M fluid particles and the 3D dam break
+// at ~50k, 200k and 1M fluid particles, at 1 and 2 threads (the scaling table of docs/performance.md).
+// Counters: particle-steps per second (all particles, walls included, as
 // the peers count them) and pair interactions per second (neighbour-list entries per second).
 // The set-up matches shared/anchors/liggghts/in.sph_dambreak2d: column 0.2 x 0.4 m, c0 = 30 m/s,
 // tank 0.8 m long with walls up to 0.45 m, the first steps of the collapse from rest.
@@ -52,13 +53,19 @@ void run_steps(benchmark::State& state, double dx) {
 void DamBreak2D_10k(benchmark::State& s) { run_steps<2>(s, 0.0028); }
 void DamBreak2D_50k(benchmark::State& s) { run_steps<2>(s, 0.00126); }
 void DamBreak2D_200k(benchmark::State& s) { run_steps<2>(s, 0.00063); }
+void DamBreak2D_1M(benchmark::State& s) { run_steps<2>(s, 0.000283); }
 void DamBreak3D_50k(benchmark::State& s) { run_steps<3>(s, 0.0055); }
+void DamBreak3D_200k(benchmark::State& s) { run_steps<3>(s, 0.00342); }
+void DamBreak3D_1M(benchmark::State& s) { run_steps<3>(s, 0.002); }
 
 }  // namespace
 
 BENCHMARK(DamBreak2D_10k)->Arg(1)->Arg(2)->Iterations(1500)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(DamBreak2D_50k)->Arg(1)->Arg(2)->Iterations(400)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(DamBreak2D_200k)->Arg(1)->Arg(2)->Iterations(100)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(DamBreak2D_1M)->Arg(1)->Arg(2)->Iterations(20)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(DamBreak3D_50k)->Arg(1)->Arg(2)->Iterations(100)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(DamBreak3D_200k)->Arg(1)->Arg(2)->Iterations(40)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(DamBreak3D_1M)->Arg(1)->Arg(2)->Iterations(10)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 BENCHMARK_MAIN();
