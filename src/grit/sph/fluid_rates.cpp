@@ -157,7 +157,8 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
     const std::size_t row_length = static_cast<std::size_t>(lists.longest_upper());
 
     auto visit = [&](Index a, Sum& sum_a, auto&& share) {
-        // b's shares of a's pairs, computed in the vector pass, added in a scalar one (scatter).
+        // b's shares of a's pairs: computed in the first loop (free of scatter, so it could vectorise),
+        // added to the partners in a second.
         thread_local std::vector<double> rows;
         rows.resize(row_length * (Dim + 2));
         double* share_v[Dim];
