@@ -29,6 +29,7 @@
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
+#include "grit/sim/initial_velocity.hpp"
 #include "grit/sim/progress.hpp"
 #include "grit/sim/run_estimate.hpp"
 #include "grit/sim/run_log.hpp"
@@ -314,18 +315,9 @@ void Simulation<Dim>::build_particles() {
             const Index i = first + static_cast<Index>(k);
             x[i] = points[k];
             v[i] = phase != Phase::wall ? to_vec<Dim>(b.velocity) : Vec::zero();
-            if (b.velocity_profile == "cantilever_mode") {
-                // First bending mode of a clamped-free beam, k L = 1.875 (Gray, Monaghan & Swift 2001):
-                // W(s) = cosh ks - cos ks - sigma (sinh ks - sin ks), sigma = (cosh kL + cos kL) /
-                // (sinh kL + sin kL), s = x - x0; v_y = V W(s) / W(L).
-                const double kl = 1.87510407, wavenumber = kl / b.mode_length;
-                const double sigma = (std::cosh(kl) + std::cos(kl)) / (std::sinh(kl) + std::sin(kl));
-                auto mode = [&](double s) {
-                    const double ks = wavenumber * std::clamp(s, 0.0, b.mode_length);
-                    return std::cosh(ks) - std::cos(ks) - sigma * (std::sinh(ks) - std::sin(ks));
-                };
-                v[i][1] += b.mode_tip_velocity * mode(points[k][0] - b.mode_origin) / mode(b.mode_length);
-            }
+            if (b.velocity_profile == "cantilever_mode")
+                v[i][1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
+                           cantilever_mode_shape(b.mode_length, b.mode_length);
             v_half[i] = v[i];
             p[i] = 0.0;
             if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
