@@ -921,8 +921,6 @@ void check_fluid_solver(const CaseSpec& c) {
     if (c.has_jet) refuse("a [jet]");
     if (!c.inlets.empty()) refuse(fmt::format("inlets ({})", c.inlets.front().key));
     if (c.fluids.empty()) refuse("a case without [[fluid]] blocks");
-    if (c.has_grains() && c.coupling.enabled)
-        refuse("grains coupled to the fluid (set coupling.enabled = false to run the grains uncoupled)");
     if (c.shepard_interval > 0)
         throw InputError(fmt::format("key 'numerics.shepard_interval' = {}: the incompressible solver keeps every "
                                      "particle at its reference density, so there is no density to filter; set it to "

@@ -1,9 +1,9 @@
 // The incompressible SPH module (fluid.solver = "isph"): neighbour lists, the
 // projection step of Cummins & Rudman (1999) (second seed paper eq. 6), the
 // velocity CFL time step. It replaces the SPH module for a case of fluid and
-// wall particles (grains uncoupled allowed); the pressure comes from a Poisson
-// equation, not from an equation of state, so the step is not bound to a sound
-// speed.
+// wall particles, with or without grains (coupled or not); the pressure comes
+// from a Poisson equation, not from an equation of state, so the step is not
+// bound to a sound speed.
 #pragma once
 
 #include <vector>
@@ -34,6 +34,8 @@ class IsphModule final : public sim::Module<Dim> {
     void predict();
     void project();
     void integrate();
+    /// The coupling module's field: the fluid's porosity when grains are coupled to it, else nullptr.
+    const double* porosity() const;
 
     sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
@@ -49,6 +51,7 @@ class IsphModule final : public sim::Module<Dim> {
                                     ///< artificial viscosity [s]
     sph::ProjectionResult last_;
     long solves_ = 0;
+    long restarts_ = 0;  ///< solves BiCGSTAB restarted from p = 0 after a breakdown
     double iterations_total_ = 0.0;
     std::string failure_;
     /// The step the limits allowed at the last check (a step cut to land on an output time is shorter) [s]

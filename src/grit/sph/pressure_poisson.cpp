@@ -129,7 +129,8 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                                                 const neighbors::NeighborList<Dim>& nl, const Kernel<Dim>& kernel,
                                                 const ProjectionSettings<Dim>& s, const core::Vec<Dim>* v_star,
                                                 const GradientCorrection<Dim>* correction, double dt,
-                                                double relaxation_time, std::int32_t* free_surface) {
+                                                double relaxation_time, std::int32_t* free_surface,
+                                                const double* porosity) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const auto un = static_cast<std::size_t>(n);
@@ -156,6 +157,20 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     guess_.resize(n);
     const double inv_dt = 1.0 / dt;
     const double relaxation = s.density_relaxation / (relaxation_time * relaxation_time);
+    // Only the free surface's p = 0 fixes the pressure's level: the fluid rows are a Laplacian and the
+    // wall rows an average. Fluid without a free surface (a closed or periodic box) leaves the system
+    // singular, and BiCGSTAB ran off to a residual of 1e33 in the periodic packed bed; then the first
+    // fluid particle keeps its pressure, and the others' follow from it.
+    Index pinned = -1;
+    {
+        bool surface = false;
+        for (Index a = 0; a < n && !surface; ++a) {
+            if (ph[a] != fluid_phase) continue;
+            if (pinned < 0) pinned = a;
+            surface = divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence;
+        }
+        if (surface) pinned = -1;
+    }
 
     dispatch(kernel, s.periodic_box, [&](const auto& k, const auto image) {
         const double support2 = k.support() * k.support();
@@ -183,7 +198,11 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     val[count] = -coef;
                     ++count;
                 }
-                if (divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence) {
+                if (a == pinned) {
+                    count = 1;
+                    diagonal = 1.0;
+                    b = p[a];
+                } else if (divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence) {
                     // Free surface: p = 0 (Cummins & Rudman 1999; Lind et al. 2012). The
                     // hydrostatic value half a spacing deep tried before put the tank's shallowest
                     // probe 5 % high once the walls were in the divergence (docs/validation.md).
@@ -195,9 +214,11 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     // -(div v^n/tau + (div v* - div v^n)/dt + gamma (rho0 - rho_s)/(rho_s tau^2)),
                     // tau the relaxation time (>= dt), rho_s = sum_b m_b W_ab where the kernel is
                     // full (div r >= 0.95 D): near the surface the sum is short of rho0 by
-                    // truncation, not by compression.
+                    // truncation, not by compression. With grains the particles carry the fluid
+                    // mass of their mixture volume, so the sum aims at eps_a rho0 (eq. 21).
                     const auto ia = static_cast<std::size_t>(a);
-                    const double rho0 = s.reference_density[static_cast<std::size_t>(mat[a])];
+                    const double rho0 = s.reference_density[static_cast<std::size_t>(mat[a])] *
+                                        (porosity ? porosity[a] : 1.0);
                     const double rho_s = summation_density_[ia];
                     const double invariance =
                         divergence_r_[ia] >= full_kernel_divergence * Dim ? (rho0 - rho_s) / rho_s : 0.0;
@@ -217,7 +238,8 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     if (r2 >= support2) continue;
                     const double w = k.value(std::sqrt(r2));
                     diagonal += w;
-                    b += rho[j] * core::dot(s.gravity, xwf) * w;
+                    const double rho_fluid = porosity ? rho[j] / porosity[j] : rho[j];
+                    b += rho_fluid * core::dot(s.gravity, xwf) * w;
                     col[count] = static_cast<int>(j);
                     val[count] = -w;
                     ++count;
@@ -291,6 +313,22 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     result.iterations = static_cast<int>(solver.iterations());
     result.residual = solver.error();
     result.converged = solver.info() == Eigen::Success && solution_.allFinite();
+    if (!solution_.allFinite()) {
+        for (Index a = 0; a < n && result.bad_row < 0; ++a) {
+            bool finite = std::isfinite(rhs_[a]);
+            for (int c = outer[a]; c < outer[a + 1]; ++c) finite = finite && std::isfinite(values[c]);
+            if (!finite) result.bad_row = a;
+        }
+        if (result.bad_row < 0) {
+            // BiCGSTAB broke down (r0 . v = 0: its shadow residual r0 = b - A p_guess became
+            // orthogonal to the search space). A start from p = 0 takes another shadow residual.
+            result.restarted = true;
+            solution_ = solver.solve(rhs_);
+            result.iterations += static_cast<int>(solver.iterations());
+            result.residual = solver.error();
+            result.converged = solver.info() == Eigen::Success && solution_.allFinite();
+        }
+    }
     for (Index a = 0; a < n; ++a)
         if (ph[a] == fluid_phase && divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence)
             ++result.surface_particles;

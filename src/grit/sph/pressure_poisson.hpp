@@ -38,6 +38,10 @@ struct ProjectionResult {
     double residual = 0.0;  ///< relative residual reached
     bool converged = true;
     Index surface_particles = 0;
+    /// BiCGSTAB broke down (a non-finite iterate) and the solve was restarted from p = 0 (once).
+    bool restarted = false;
+    /// The first row of the system with a non-finite entry (its particle), or -1.
+    Index bad_row = -1;
 };
 
 /// div r_a = -sum_b V_b x_ab . grad W_ab over fluid and wall neighbours (D inside a full kernel)
@@ -77,13 +81,17 @@ class PressureProjection {
     /// particles' pressure; the previous pressure is the initial guess.
     /// `free_surface` gets 1 for the surface particles. The divergence the particles carry in from
     /// the last step (div v^n: the projection's residual, the motion since, the shifting) is removed
-    /// over `relaxation_time` (>= dt: the step the time-step limits allow), the divergence of the
+    /// over `relaxation_time` (>= dt: the step the fluid's own limits allow,
+    /// not a shorter DEM step), the divergence of the
     /// step's own forces over dt: a step cut short to land on an output time then does not turn
     /// that divergence into a pressure ~ 1/dt (-6 kPa in the tank at rest at a 1e-6 s step).
+    /// `porosity` (grains coupled to the fluid, else nullptr): the particles' density is then the
+    /// locally averaged one, rho_bar = eps rho0 (eq. 21); the density invariance aims the summation
+    /// density at eps_a rho0 and the wall rows take the fluid's own density rho_bar / eps.
     ProjectionResult solve(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                            const Kernel<Dim>& kernel, const ProjectionSettings<Dim>& settings,
                            const core::Vec<Dim>* v_star, const GradientCorrection<Dim>* correction, double dt,
-                           double relaxation_time, std::int32_t* free_surface);
+                           double relaxation_time, std::int32_t* free_surface, const double* porosity = nullptr);
 
     /// The system of the last solve (tests).
     const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& matrix() const { return matrix_; }
