@@ -49,8 +49,8 @@ IsphModule<Dim>::IsphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& se
     shifting_.periodic_box = setup.periodic_box;
     spdlog::warn(
         "fluid.solver = \"isph\" is validated on the 2D tank and dam break and on a packed bed of grains; its "
-        "pressure swings by a few percent about the hydrostatic one, and a grain settling in it overshoots its "
-        "terminal velocity (docs/validation.md, incompressible SPH)");
+        "water grows by about 0.7 % a second (a tank's pressure drifts up), and a grain settling in it overshoots "
+        "its terminal velocity (docs/validation.md, incompressible SPH)");
     // 1 on the particles the projection treats as free surface (p = 0 there), for ParaView.
     state_.particles.fields().template add<std::int32_t>("free_surface", 0, true, false);
 }
