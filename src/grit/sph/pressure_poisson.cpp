@@ -160,7 +160,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     // Only the free surface's p = 0 fixes the pressure's level: the fluid rows are a Laplacian and the
     // wall rows an average. Fluid without a free surface (a closed or periodic box) leaves the system
     // singular, and BiCGSTAB ran off to a residual of 1e33 in the periodic packed bed; then the first
-    // fluid particle keeps its pressure, and the others' follow from it.
+    // fluid particle keeps its pressure, and the others follow from it.
     Index pinned = -1;
     {
         bool surface = false;
