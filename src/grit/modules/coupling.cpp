@@ -74,7 +74,7 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
     }
 
     // 0 marks a particle the coupling has not seen yet (update_porosity gives it its porosity).
-    state.particles.fields().template add<double>("porosity", 0.0, true).set_output_scope(
+    state.particles.fields().template add<double>(porosity_field, 0.0, true).set_output_scope(
         [](std::int32_t phase, std::int32_t) { return phase == static_cast<std::int32_t>(Phase::fluid); });
     auto& grain_fields = state.grains->grains().fields();
     grain_fields.template add<core::Vec<Dim>>("fluid_force", core::Vec<Dim>::zero(), true);
@@ -99,7 +99,7 @@ void CouplingModule<Dim>::update_porosity() {
     std::vector<double> eps(static_cast<std::size_t>(n));
     coupling_.compute_porosity(state_.grains->grains(), ps, eps.data());
 
-    double* porosity = ps.fields().template get<double>("porosity").data();
+    double* porosity = ps.fields().template get<double>(porosity_field).data();
     double* m = ps.fields().template get<double>("mass").data();
     double* rho = ps.fields().template get<double>("density").data();
     double* rho_half = ps.fields().template get<double>("density_half").data();
@@ -135,7 +135,7 @@ void CouplingModule<Dim>::exchange() {
         throw std::logic_error("fluid-grain pairs used after the particle set changed");
     auto& grains = state_.grains->grains();
     auto& fields = grains.fields();
-    coupling_.exchange_forces(grains, ps, ps.fields().template get<double>("porosity").data(),
+    coupling_.exchange_forces(grains, ps, ps.fields().template get<double>(porosity_field).data(),
                               fields.template get<core::Vec<Dim>>("fluid_force").data(),
                               fields.template get<core::Vec<Dim>>("drag_force").data());
 }
@@ -144,7 +144,7 @@ template <int Dim>
 void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     using sim::OutputValue;
     const auto& ps = state_.particles;
-    const double* porosity = ps.fields().template get<double>("porosity").data();
+    const double* porosity = ps.fields().template get<double>(porosity_field).data();
     const std::int32_t* phase = ps.phase();
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     const double min_eps = parallel::reduce(
@@ -224,7 +224,7 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
     for (int k = 0; k < Dim; ++k) bed_volume *= hi[k] - lo[k];
     if (!(bed_volume > 0.0)) return;
     const auto& ps = state_.particles;
-    const double* porosity = ps.fields().template get<double>("porosity").data();
+    const double* porosity = ps.fields().template get<double>(porosity_field).data();
     const std::int32_t* phase = ps.phase();
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     double flux = 0.0, volume = 0.0;

@@ -17,6 +17,14 @@ public:
     /// must exist: the grains module is built first). Throws InputError without a fluid material.
     CouplingModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup);
 
+    /// The fluid particles' porosity eps (eq. 20), the field this module registers: what the fluid
+    /// solvers read when grains are coupled to them; nullptr in a run without the coupling.
+    static constexpr const char* porosity_field = "porosity";
+    static const double* porosity(const particles::SphParticles<Dim>& particles) {
+        const auto& fields = particles.fields();
+        return fields.has(porosity_field) ? fields.template get<double>(porosity_field).data() : nullptr;
+    }
+
     std::string name() const override { return "coupling"; }
     void install(sim::Pipeline& pipeline) override;
     void prime() override { priming_ = true; }

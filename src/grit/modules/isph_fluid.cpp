@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "grit/modules/coupling.hpp"
 #include "grit/parallel/parallel.hpp"
 
 namespace grit::modules {
@@ -99,8 +100,7 @@ void IsphModule<Dim>::update_neighbors(bool force) {
 
 template <int Dim>
 const double* IsphModule<Dim>::porosity() const {
-    const auto& fields = state_.particles.fields();
-    return fields.has("porosity") ? fields.template get<double>("porosity").data() : nullptr;
+    return CouplingModule<Dim>::porosity(state_.particles);
 }
 
 template <int Dim>

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "grit/boundary/wall_pressure.hpp"
+#include "grit/modules/coupling.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sph/pressure.hpp"
 #include "grit/sph/shepard_filter.hpp"
@@ -71,9 +72,7 @@ void SphModule<Dim>::install(sim::Pipeline& pipeline) {
 
 template <int Dim>
 const double* SphModule<Dim>::porosity() const {
-    // The coupling module's field: the fluid's porosity when grains are coupled to it.
-    const auto& fields = state_.particles.fields();
-    return fields.has("porosity") ? fields.template get<double>("porosity").data() : nullptr;
+    return CouplingModule<Dim>::porosity(state_.particles);
 }
 
 template <int Dim>
