@@ -14,7 +14,9 @@
 namespace grit::modules {
 
 namespace {
-constexpr double force_coefficient = 0.08;  ///< of the force condition dt <= C sqrt(h / |a|)
+constexpr double force_coefficient = 0.25;  ///< of the force condition dt <= C sqrt(h / |a|)
+/// Of the longest relaxation time, C sqrt(h / |a|), when a shorter step than the fluid's is imposed.
+constexpr double relaxation_coefficient = 0.08;
 /// det L_a above which a free-surface particle's gradient is not corrected (det M_a < 1/4)
 constexpr double max_surface_correction = 4.0;
 constexpr auto fluid_phase = static_cast<std::int32_t>(Phase::fluid);
@@ -49,9 +51,9 @@ IsphModule<Dim>::IsphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& se
     shifting_.spacing = setup.spacing;
     shifting_.periodic_box = setup.periodic_box;
     spdlog::warn(
-        "fluid.solver = \"isph\" is validated on the 2D tank and dam break and on a packed bed of grains; its "
-        "water grows by about 0.7 % a second (a tank's pressure drifts up), and a grain settling in it overshoots "
-        "its terminal velocity (docs/validation.md, incompressible SPH)");
+        "fluid.solver = \"isph\" is validated on the 2D tank and dam break and on a packed bed of grains; the "
+        "free surface of water at rest carries waves of a few millimetres (1-3 cm/s, WCSPH's 0.3 mm/s), and a "
+        "grain settling in it overshoots its terminal velocity by 5 % (docs/validation.md, incompressible SPH)");
     // 1 on the particles the projection treats as free surface (p = 0 there), for ParaView.
     state_.particles.fields().template add<std::int32_t>("free_surface", 0, true, false);
 }
@@ -155,12 +157,12 @@ void IsphModule<Dim>::project() {
     const auto& nl = state_.neighbors.list();
     const auto* L = correction_.empty() ? nullptr : correction_.data();
     auto& surface = ps.fields().template get<std::int32_t>("free_surface");
-    // The carried divergence and the density invariance go over ISPH's own step, not a shorter one
-    // the grains impose: removing the carried divergence at each DEM step (80 per fluid step in the
-    // sloshing tank) blew the tank up within 7 ms, the invariance (~ 1/tau^2) on it within 5 ms
-    // (docs/theory.md).
+    // The carried divergence and the density invariance go over ISPH's own step (at most 0.08
+    // sqrt(h/|a|)), not a shorter one the grains impose: removing the carried divergence at each DEM
+    // step (80 per fluid step in the sloshing tank) blew the tank up within 7 ms, the invariance
+    // (~ 1/tau^2) on it within 5 ms (docs/theory.md).
     last_ = projection_.solve(ps, nl, setup_.kernel, projection_settings_, v_star_.data(), L, state_.clock.dt,
-                              std::max(state_.clock.dt, nominal_dt_), surface.data(), porosity());
+                              std::max(state_.clock.dt, relaxation_dt_), surface.data(), porosity());
     ++solves_;
     iterations_total_ += last_.iterations;
     if (last_.restarted) ++restarts_;
@@ -193,15 +195,19 @@ void IsphModule<Dim>::project() {
     // Kept apart from the particles' acceleration, which holds the predictor's (gravity and
     // viscosity) for the time step: the pressure acceleration of a projection is not a force the
     // step must resolve. It removes whatever divergence the step starts with, so it grows as the
-    // step shrinks, and a force-limited step (0.08 sqrt(h/|a|)) fed on it collapsed to 1e-5 s and
+    // step shrinks, and a force-limited step (C sqrt(h/|a|)) fed on it collapsed to 1e-5 s and
     // ran away in the dam break.
     sph::pressure_acceleration(ps, nl, setup_.kernel, setup_.periodic_box, L, pressure_acc_);
 }
 
 template <int Dim>
 void IsphModule<Dim>::integrate() {
-    // v^(n+1) = v* - dt grad p / rho; x^(n+1) = x^n + dt (v^n + v^(n+1)) / 2. The
-    // density stays rho0: the particles carry no compression (a continuity
+    // v^(n+1) = v* - dt grad p / rho; x^(n+1) = x^n + dt v^(n+1) (symplectic Euler). Not the
+    // trapezoidal x^n + dt (v^n + v^(n+1)) / 2 used before: with the pressure taken at x^n it
+    // amplifies an oscillation (a surface wave, a wall layer) by about 1 + (omega dt)^2 / 4 a step,
+    // which held the step to 0.08 sqrt(h/g); this one is neutral up to omega dt = 2. The density
+    // invariance then acts within the step it is asked for, as Asai et al. (2012) move the particles.
+    // The density stays rho0: the particles carry no compression (a continuity
     // density drifted to 0.7 rho0 at the dam break's front, whose invariance term
     // then drove the pressure to oscillate; docs/theory.md).
     if (!failure_.empty()) return;  // the health check reports it with the last good state
@@ -217,7 +223,7 @@ void IsphModule<Dim>::integrate() {
         if (ph[i] != fluid_phase) return;
         const auto k = static_cast<std::size_t>(i);
         const auto v_new = v_star_[k] + pressure_acc_[k] * dt;
-        x[i] += (v[i] + v_new) * (0.5 * dt);
+        x[i] += v_new * dt;
         if (box.any()) x[i] = box.wrap(x[i]);
         v[i] = v_half[i] = v_new;
     });
@@ -228,7 +234,7 @@ void IsphModule<Dim>::integrate() {
 
 template <int Dim>
 double IsphModule<Dim>::stable_time_step() const {
-    // No sound speed: the velocity CFL C_F h / |v|max, the force condition 0.08 sqrt(h / |a|max)
+    // No sound speed: the velocity CFL C_F h / |v|max, the force condition 0.25 sqrt(h / |a|max)
     // on the predictor's acceleration (gravity and viscosity, at least |g|; not the projection's),
     // and the viscous limits 0.125 h^2 / nu (laminar and artificial).
     const auto& ps = state_.particles;
@@ -251,10 +257,15 @@ double IsphModule<Dim>::stable_time_step() const {
     const double inf = std::numeric_limits<double>::infinity();
     double dt = e.v2 > 0.0 ? setup_.spec.cfl * h / std::sqrt(e.v2) : inf;
     const double accel = std::max(std::sqrt(e.a2), core::norm(viscous_.gravity));
-    // 0.08, not WCSPH's 0.25: the hydrostatic tank (dx 1 cm) held at rest for 2 s
-    // with 0.084 and blew up from the wall layers with 0.14 and 0.25
+    // 0.25, WCSPH's: the hydrostatic tank (dx 1 cm) holds at rest for 10 s. With the trapezoidal
+    // position update it held with 0.084 and blew up from the wall layers with 0.14 and 0.25
     // (docs/validation.md).
     if (accel > 0.0) dt = std::min(dt, force_coefficient * std::sqrt(h / accel));
+    // The carried divergence and the density invariance go over this step, or, when a shorter one is
+    // imposed (the grains', an output time), over at most 0.08 sqrt(h/|a|). Over 0.25 sqrt(h/|a|) (1.3
+    // ms, 0.8 of the grain's relaxation time in cases/sedimentation_3d) the column's start-up held the
+    // grain at 0.25 v_t for 5 ms and it then overshot to 1.25 v_t; over 0.08, 1.05 v_t.
+    relaxation_dt_ = accel > 0.0 ? std::min(dt, relaxation_coefficient * std::sqrt(h / accel)) : dt;
     for (std::size_t m = 0; m < viscous_.materials.size(); ++m) {
         const double nu = viscous_.materials[m].kinematic_viscosity;
         if (nu > 0.0) dt = std::min(dt, 0.125 * h * h / nu);
@@ -267,7 +278,7 @@ double IsphModule<Dim>::stable_time_step() const {
             c = std::max(c, m.sound_speed);
         dt = setup_.spec.cfl * h / c;
     }
-    nominal_dt_ = dt;
+    relaxation_dt_ = std::min(relaxation_dt_, dt);
     return dt;
 }
 

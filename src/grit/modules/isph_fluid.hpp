@@ -54,8 +54,9 @@ class IsphModule final : public sim::Module<Dim> {
     long restarts_ = 0;  ///< solves BiCGSTAB restarted from p = 0 after a breakdown
     double iterations_total_ = 0.0;
     std::string failure_;
-    /// The step the limits allowed at the last check (a step cut to land on an output time is shorter) [s]
-    mutable double nominal_dt_ = 0.0;
+    /// The longest time over which the carried divergence and the density invariance act, from the
+    /// last check of the step: the fluid's own step, at most 0.08 sqrt(h / |a|) [s]
+    mutable double relaxation_dt_ = 0.0;
 };
 
 extern template class IsphModule<2>;

@@ -81,7 +81,7 @@ class PressureProjection {
     /// particles' pressure; the previous pressure is the initial guess.
     /// `free_surface` gets 1 for the surface particles. The divergence the particles carry in from
     /// the last step (div v^n: the projection's residual, the motion since, the shifting) is removed
-    /// over `relaxation_time` (>= dt: the step the fluid's own limits allow,
+    /// over `relaxation_time` (>= dt: the step the fluid's own limits allow, at most 0.08 sqrt(h/|a|);
     /// not a shorter DEM step), the divergence of the
     /// step's own forces over dt: a step cut short to land on an output time then does not turn
     /// that divergence into a pressure ~ 1/dt (-6 kPa in the tank at rest at a 1e-6 s step).
@@ -103,6 +103,7 @@ class PressureProjection {
     std::vector<int> padded_columns_;
     std::vector<double> padded_values_;
     std::vector<double> divergence_r_, divergence_v_, divergence_v0_, summation_density_;
+    std::vector<std::uint8_t> full_kernel_;
 };
 
 extern template class PressureProjection<2>;
