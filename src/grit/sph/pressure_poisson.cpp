@@ -184,7 +184,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
         for (Index a = 0; a < n && !surface; ++a) {
             if (ph[a] != fluid_phase) continue;
             if (pinned < 0) pinned = a;
-            surface = divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence;
+            surface = on_surface(a);
         }
         if (surface) pinned = -1;
     }
@@ -219,7 +219,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     count = 1;
                     diagonal = 1.0;
                     b = p[a];
-                } else if (divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence) {
+                } else if (on_surface(a)) {
                     // Free surface: p = 0 (Cummins & Rudman 1999; Lind et al. 2012). The
                     // hydrostatic value half a spacing deep tried before put the tank's shallowest
                     // probe 5 % high once the walls were in the divergence (docs/validation.md).
@@ -346,7 +346,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
         }
     }
     for (Index a = 0; a < n; ++a)
-        if (ph[a] == fluid_phase && divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence)
+        if (ph[a] == fluid_phase && on_surface(a))
             ++result.surface_particles;
     if (result.converged)
         parallel::for_each(n, [&](Index a) {
