@@ -55,7 +55,7 @@ class IsphModule final : public sim::Module<Dim> {
     double iterations_total_ = 0.0;
     std::string failure_;
     /// The longest time over which the carried divergence and the density invariance act, from the
-    /// last check of the step: the fluid's own step, at most 0.08 sqrt(h / |a|) [s]
+    /// last check of the step: the fluid's own step [s]
     mutable double relaxation_dt_ = 0.0;
 };
 

@@ -1,6 +1,11 @@
 // The ISPH pressure projection: free-surface detection, the divergence and
 // gradient sums, and the sparse system (assembled row by row in a gather loop,
 // solved by Eigen's BiCGSTAB).
+// GCC 12 with -march=native (AVX-512) warns that a register in Eigen's vectorised sum inside
+// BiCGSTAB "may be used uninitialized" (avx512fintrin.h); a false positive in the library's code.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "grit/sph/pressure_poisson.hpp"
 
 #include <algorithm>
@@ -146,24 +151,6 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
         return divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence;
     };
 
-    // A fluid particle's kernel is full when neither it nor a fluid neighbour within the support is
-    // on the free surface; only there is the summation density trusted. Not div r >= 0.95 D, used
-    // before: div r counts the neighbours' volumes, so a region that had expanded by 5 % fell under
-    // it, lost its density invariance and went on expanding (the tank's top five rows 10 % thin after
-    // 3 s, the water 2 % more).
-    full_kernel_.assign(un, 0);
-    dispatch(kernel, s.periodic_box, [&](const auto& k, const auto image) {
-        const double support2 = k.support() * k.support();
-        parallel::for_each(n, [&](Index a) {
-            if (ph[a] != fluid_phase || on_surface(a)) return;
-            for (Index e = nl.begin(a); e < nl.end(a); ++e) {
-                const Index j = nbr[e];
-                if (ph[j] == fluid_phase && on_surface(j) && core::norm2(image(x[a] - x[j])) < support2) return;
-            }
-            full_kernel_[static_cast<std::size_t>(a)] = 1;
-        });
-    });
-
     // Rows in padded storage: row a has room for its diagonal and every listed
     // neighbour.
     row_count_.assign(un, 0);
@@ -188,6 +175,43 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
         }
         if (surface) pinned = -1;
     }
+
+    // The surface row's terms d n . grad p_a = d sum_b V_b (p_b - p_a) n . L_a grad W_ab, n the
+    // outward normal -sum_b V_b grad W_ab / |...|. Kept at p = 0 (nothing added) for a particle with
+    // no normal, one whose gradient is not corrected (a surge's tip), or whose corrected gradient
+    // turns the normal inwards (n . L_a sum_b V_b grad W_ab >= 0: a splash's stray L_a), where the
+    // extrapolation would not be one.
+    const auto add_surface_row = [&](Index a, const auto& k, const auto image, double support2, int* col, double* val,
+                                     Index& count, double& diagonal) {
+        if (!(s.surface_offset > 0.0)) return;
+        if (correction && correction[a].determinant() > s.max_surface_correction) return;
+        Vec colour = Vec::zero();
+        for (Index e = nl.begin(a); e < nl.end(a); ++e) {
+            const Index j = nbr[e];
+            if (!in_projection(ph[j])) continue;
+            const Vec xab = image(x[a] - x[j]);
+            const double r2 = core::norm2(xab);
+            if (r2 < support2) colour += xab * (m[j] / rho[j] * k.gradient_factor(std::sqrt(r2)));
+        }
+        const double length = std::sqrt(core::norm2(colour));
+        if (!(length > 0.0)) return;
+        const Vec normal = colour * (-1.0 / length);
+        const Vec corrected_colour = correction ? correction[a].apply(colour) : colour;
+        if (core::dot(normal, corrected_colour) >= 0.0) return;
+        for (Index e = nl.begin(a); e < nl.end(a); ++e) {
+            const Index j = nbr[e];
+            if (!in_projection(ph[j])) continue;
+            const Vec xab = image(x[a] - x[j]);
+            const double r2 = core::norm2(xab);
+            if (r2 >= support2) continue;
+            const Vec grad = (correction ? correction[a].apply(xab) : xab) * k.gradient_factor(std::sqrt(r2));
+            const double c = s.surface_offset * m[j] / rho[j] * core::dot(normal, grad);
+            diagonal -= c;
+            col[count] = static_cast<int>(j);
+            val[count] = c;
+            ++count;
+        }
+    };
 
     dispatch(kernel, s.periodic_box, [&](const auto& k, const auto image) {
         const double support2 = k.support() * k.support();
@@ -220,24 +244,31 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     diagonal = 1.0;
                     b = p[a];
                 } else if (on_surface(a)) {
-                    // Free surface: p = 0 (Cummins & Rudman 1999; Lind et al. 2012). The
-                    // hydrostatic value half a spacing deep tried before put the tank's shallowest
-                    // probe 5 % high once the walls were in the divergence (docs/validation.md).
+                    // Free surface: p = 0 where the particle's volume ends, d = surface_offset out
+                    // along its normal n: p_a + d n . grad p_a = 0, grad p_a the gradient the
+                    // correction applies (L_a, the difference form). p = 0 on the particle itself
+                    // (Cummins & Rudman 1999; Lind et al. 2012) put the surface half a spacing low:
+                    // the tank's shallowest probe read 5.6 % low. The hydrostatic value half a
+                    // spacing deep tried before used gravity, which a moving surface does not feel.
                     if (free_surface) free_surface[a] = 1;
                     count = 1;
                     diagonal = 1.0;
                     b = 0.0;
+                    add_surface_row(a, k, image, support2, col, val, count, diagonal);
                 } else {
                     // -(div v^n/tau + (div v* - div v^n)/dt + gamma (rho0 - rho_s)/(rho_s tau^2)),
-                    // tau the relaxation time (>= dt), rho_s = sum_b m_b W_ab where the kernel is
-                    // full: near the surface the sum is short of rho0 by
-                    // truncation, not by compression. With grains the particles carry the fluid
-                    // mass of their mixture volume, so the sum aims at eps_a rho0 (eq. 21).
+                    // tau the relaxation time (>= dt), rho_s = sum_b m_b W_ab, on every particle
+                    // off the free surface. The rows just under the surface miss part of their
+                    // kernel, but without the invariance nothing holds their spacing: it was left
+                    // to drift, the top rows thinned by 5-12 % and the surface of the tank at rest
+                    // carried waves of 1-3 cm/s (docs/validation.md).
+                    // With grains the particles carry the fluid mass of their mixture volume, so
+                    // the sum aims at eps_a rho0 (eq. 21).
                     const auto ia = static_cast<std::size_t>(a);
                     const double rho0 = s.reference_density[static_cast<std::size_t>(mat[a])] *
                                         (porosity ? porosity[a] : 1.0);
                     const double rho_s = summation_density_[ia];
-                    const double invariance = full_kernel_[ia] ? (rho0 - rho_s) / rho_s : 0.0;
+                    const double invariance = (rho0 - rho_s) / rho_s;
                     const double carried = divergence_v0_[ia];
                     b = -(carried / relaxation_time + (divergence_v_[ia] - carried) * inv_dt + relaxation * invariance);
                 }

@@ -2,10 +2,10 @@
 //   div(grad p / rho) = div v* / dt + gamma (rho0 - rho_s) / (rho_s tau^2)
 // the second term the density invariance of Asai et al. (2012) on the summation density rho_s, with
 // the SPH Laplacian  sum_b m_b 8/(rho_a+rho_b)^2 (p_a - p_b) x_ab . grad W_ab / (r^2 + eta^2)  and the
-// divergence  -(1/rho_a) sum_b m_b v*_ab . grad W_ab  over fluid and wall neighbours, p = 0 on the
-// free surface, and the wall particles' pressure from their fluid neighbours (Adami et al. 2012) as
-// unknowns of the same system. Each row is divided by its diagonal; the system is solved by Eigen's
-// BiCGSTAB with a diagonal preconditioner.
+// divergence  -(1/rho_a) sum_b m_b v*_ab . grad W_ab  over fluid and wall neighbours, p = 0 half a
+// spacing outside the free-surface particles, and the wall particles' pressure from their fluid
+// neighbours (Adami et al. 2012) as unknowns of the same system. Each row is divided by its
+// diagonal; the system is solved by Eigen's BiCGSTAB with a diagonal preconditioner.
 #pragma once
 
 #include <Eigen/IterativeLinearSolvers>
@@ -28,6 +28,12 @@ struct ProjectionSettings {
     double tolerance = 1e-8;                          ///< relative residual |b - A p| / |b|
     int max_iterations = 1000;
     double free_surface_divergence = 1.5;  ///< div r below this: a free-surface particle
+    /// How far outside a free-surface particle, along its normal, the pressure vanishes: half the
+    /// particle spacing, the edge of the particle's volume [m]; 0: p = 0 on the particle itself.
+    double surface_offset = 0.0;
+    /// det L_a above which a free-surface particle's gradient is not corrected (its neighbours fill
+    /// less than a quarter of the kernel's moments: the tip of a surge); there p = 0 on the particle.
+    double max_surface_correction = 4.0;
     double density_relaxation = 0.0;       ///< gamma of the density-invariance source
     neighbors::PeriodicBox<Dim> periodic_box;
     std::vector<double> reference_density;  ///< rho0 per material [kg/m^3]
@@ -77,12 +83,12 @@ template <int Dim>
 class PressureProjection {
   public:
     /// Solves for the pressure of the fluid and wall particles from the predicted
-    /// velocities `v_star` (walls: their own velocity) and writes it to the
+    /// velocities `v_star` (walls: their own velocity plus g dt) and writes it to the
     /// particles' pressure; the previous pressure is the initial guess.
     /// `free_surface` gets 1 for the surface particles. The divergence the particles carry in from
     /// the last step (div v^n: the projection's residual, the motion since, the shifting) is removed
-    /// over `relaxation_time` (>= dt: the step the fluid's own limits allow, at most 0.08 sqrt(h/|a|);
-    /// not a shorter DEM step), the divergence of the
+    /// over `relaxation_time` (>= dt: the step the fluid's own limits allow, not a shorter DEM step
+    /// or a step cut for an output time), the divergence of the
     /// step's own forces over dt: a step cut short to land on an output time then does not turn
     /// that divergence into a pressure ~ 1/dt (-6 kPa in the tank at rest at a 1e-6 s step).
     /// `porosity` (grains coupled to the fluid, else nullptr): the particles' density is then the
@@ -103,7 +109,6 @@ class PressureProjection {
     std::vector<int> padded_columns_;
     std::vector<double> padded_values_;
     std::vector<double> divergence_r_, divergence_v_, divergence_v0_, summation_density_;
-    std::vector<std::uint8_t> full_kernel_;
 };
 
 extern template class PressureProjection<2>;
