@@ -181,36 +181,37 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     // no normal, one whose gradient is not corrected (a surge's tip), or whose corrected gradient
     // turns the normal inwards (n . L_a sum_b V_b grad W_ab >= 0: a splash's stray L_a), where the
     // extrapolation would not be one.
+    // f(j, x_aj, r^2) for each fluid or wall neighbour j of a within the kernel's support.
+    const auto for_each_in_support = [&](Index a, const auto image, double support2, auto&& f) {
+        for (Index e = nl.begin(a); e < nl.end(a); ++e) {
+            const Index j = nbr[e];
+            if (!in_projection(ph[j])) continue;
+            const Vec xab = image(x[a] - x[j]);
+            const double r2 = core::norm2(xab);
+            if (r2 < support2) f(j, xab, r2);
+        }
+    };
     const auto add_surface_row = [&](Index a, const auto& k, const auto image, double support2, int* col, double* val,
                                      Index& count, double& diagonal) {
         if (!(s.surface_offset > 0.0)) return;
         if (correction && correction[a].determinant() > s.max_surface_correction) return;
         Vec colour = Vec::zero();
-        for (Index e = nl.begin(a); e < nl.end(a); ++e) {
-            const Index j = nbr[e];
-            if (!in_projection(ph[j])) continue;
-            const Vec xab = image(x[a] - x[j]);
-            const double r2 = core::norm2(xab);
-            if (r2 < support2) colour += xab * (m[j] / rho[j] * k.gradient_factor(std::sqrt(r2)));
-        }
+        for_each_in_support(a, image, support2, [&](Index j, const Vec& xab, double r2) {
+            colour += xab * (m[j] / rho[j] * k.gradient_factor(std::sqrt(r2)));
+        });
         const double length = std::sqrt(core::norm2(colour));
         if (!(length > 0.0)) return;
         const Vec normal = colour * (-1.0 / length);
         const Vec corrected_colour = correction ? correction[a].apply(colour) : colour;
         if (core::dot(normal, corrected_colour) >= 0.0) return;
-        for (Index e = nl.begin(a); e < nl.end(a); ++e) {
-            const Index j = nbr[e];
-            if (!in_projection(ph[j])) continue;
-            const Vec xab = image(x[a] - x[j]);
-            const double r2 = core::norm2(xab);
-            if (r2 >= support2) continue;
+        for_each_in_support(a, image, support2, [&](Index j, const Vec& xab, double r2) {
             const Vec grad = (correction ? correction[a].apply(xab) : xab) * k.gradient_factor(std::sqrt(r2));
             const double c = s.surface_offset * m[j] / rho[j] * core::dot(normal, grad);
             diagonal -= c;
             col[count] = static_cast<int>(j);
             val[count] = c;
             ++count;
-        }
+        });
     };
 
     dispatch(kernel, s.periodic_box, [&](const auto& k, const auto image) {
