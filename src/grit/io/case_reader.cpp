@@ -568,7 +568,7 @@ ShapeSpec read_shape(const Section& s, int dim, double dx, bool allow_tank, cons
         }
         if (shape.kind == "tank") {
             shape.layers = s.integer_or("layers", 3, 1, 20);
-            shape.open = s.strings_or("open", {dim == 2 ? "top" : "top"});
+            shape.open = s.strings_or("open", {"top"});
             std::vector<std::string> sides = {"left", "right", "bottom", "top"};
             if (dim == 3) sides = {"left", "right", "front", "back", "bottom", "top"};
             for (const auto& o : shape.open)

@@ -29,7 +29,7 @@
 #include "grit/modules/sph_solid.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
-#include "grit/sim/initial_velocity.hpp"
+#include "grit/sim/particle_blocks.hpp"
 #include "grit/sim/progress.hpp"
 #include "grit/sim/run_estimate.hpp"
 #include "grit/sim/run_log.hpp"
@@ -219,7 +219,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     if (has_sph_) modules_.push_back(std::make_unique<modules::OpenBoundariesModule<Dim>>(state_, setup_));
     if (spec_.has_thin_walls()) modules_.push_back(std::make_unique<modules::ThinWallsModule<Dim>>(state_, setup_));
 
-    build_particles();
+    add_particle_blocks<Dim>(spec_, setup_.spacing, state_.particles);
     for (auto& m : modules_) m->initialise();
     const auto* x = state_.particles.position();
     for (Index i = 0; i < state_.particles.size(); ++i)
@@ -276,68 +276,6 @@ void Simulation<Dim>::check_periodic_lengths() const {
                 "along {} or refine numerics.particle_spacing",
                 spec_.periodic_key, length, axis[k], radius, 3.0 * radius, axis[k]));
     }
-}
-
-template <int Dim>
-void Simulation<Dim>::build_particles() {
-    const double dx = setup_.spacing;
-    const double cell_volume = std::pow(dx, Dim);
-    const Vec g = to_vec<Dim>(spec_.gravity);
-    const double g_norm = core::norm(g);
-    auto& particles = state_.particles;
-
-    auto add_block = [&](const io::BlockSpec& b, Phase phase) {
-        WallNormals<Dim> normals;  // thin walls: each particle's wall normal (ThinWallsModule)
-        const auto points = lattice_points<Dim>(b.shape, dx, &normals);
-        if (points.empty())
-            throw core::InputError(fmt::format("{}: the shape holds no particle at numerics.particle_spacing = {} m",
-                                               b.key, dx));
-        const auto& mat = spec_.materials[static_cast<std::size_t>(b.material)];
-        const double rho0 = mat.reference_density();
-        // Hydrostatic start: p = rho0 |g| depth below the block's free surface (its highest point).
-        double top = 0.0;
-        if (b.hydrostatic && g_norm > 0.0) {
-            top = -1e300;
-            for (const auto& x : points) top = std::max(top, -core::dot(g, x) / g_norm);
-            top += 0.5 * dx;
-        }
-        const Index first = particles.append(static_cast<Index>(points.size()));
-        Vec* x = particles.position();
-        Vec* v = particles.velocity();
-        double* rho = particles.density();
-        double* p = particles.pressure();
-        double* m = particles.mass();
-        std::int32_t* ph = particles.phase();
-        std::int32_t* mi = particles.material();
-        Vec* v_half = particles.velocity_half();
-        double* rho_half = particles.density_half();
-        for (std::size_t k = 0; k < points.size(); ++k) {
-            const Index i = first + static_cast<Index>(k);
-            x[i] = points[k];
-            v[i] = phase != Phase::wall ? to_vec<Dim>(b.velocity) : Vec::zero();
-            if (b.velocity_profile == "cantilever_mode")
-                v[i][1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
-                           cantilever_mode_shape(b.mode_length, b.mode_length);
-            v_half[i] = v[i];
-            p[i] = 0.0;
-            if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
-            rho[i] = material::density_from_pressure(mat.eos, p[i]);
-            rho_half[i] = rho[i];
-            m[i] = rho0 * cell_volume;
-            ph[i] = static_cast<std::int32_t>(phase);
-            mi[i] = b.material;
-        }
-        if (!normals.normal.empty()) {
-            auto& fields = particles.fields();
-            Vec* n = fields.template get<Vec>(modules::ThinWallsModule<Dim>::normal_field).data();
-            std::int32_t* far = fields.template get<std::int32_t>(modules::ThinWallsModule<Dim>::far_field).data();
-            std::copy(normals.normal.begin(), normals.normal.end(), n + first);
-            std::copy(normals.far_side.begin(), normals.far_side.end(), far + first);
-        }
-    };
-    for (const auto& f : spec_.fluids) add_block(f, Phase::fluid);
-    for (const auto& s : spec_.solids) add_block(s, Phase::solid);
-    for (const auto& w : spec_.walls) add_block(w, Phase::wall);
 }
 
 template <int Dim>

@@ -124,7 +124,6 @@ public:
     std::vector<OutputValue> output_values() const;
 
 private:
-    void build_particles();
     void check_periodic_lengths() const;
     void check_health();
     void compute_time_step();

@@ -1,0 +1,91 @@
+// The case's particle blocks laid out as lattices with their starting state.
+#include "grit/sim/particle_blocks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "grit/core/error.hpp"
+#include "grit/material/equation_of_state.hpp"
+#include "grit/modules/thin_walls.hpp"
+#include "grit/sim/geometry.hpp"
+#include "grit/sim/initial_velocity.hpp"
+
+namespace grit::sim {
+
+namespace {
+
+template <int Dim>
+void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, Phase phase, double dx,
+               particles::SphParticles<Dim>& particles) {
+    using Vec = core::Vec<Dim>;
+    WallNormals<Dim> normals;  // thin walls: each particle's wall normal (ThinWallsModule)
+    const auto points = lattice_points<Dim>(b.shape, dx, &normals);
+    if (points.empty())
+        throw core::InputError(
+            fmt::format("{}: the shape holds no particle at numerics.particle_spacing = {} m", b.key, dx));
+    const auto& mat = spec.materials[static_cast<std::size_t>(b.material)];
+    const double rho0 = mat.reference_density();
+    const double cell_volume = std::pow(dx, Dim);
+    const Vec g = core::to_vec<Dim>(spec.gravity);
+    const double g_norm = core::norm(g);
+    // Hydrostatic start: p = rho0 |g| depth below the block's free surface (its highest point).
+    double top = 0.0;
+    if (b.hydrostatic && g_norm > 0.0) {
+        top = -1e300;
+        for (const auto& x : points)
+            top = std::max(top, -core::dot(g, x) / g_norm);
+        top += 0.5 * dx;
+    }
+    const Index first = particles.append(static_cast<Index>(points.size()));
+    Vec* x = particles.position();
+    Vec* v = particles.velocity();
+    double* rho = particles.density();
+    double* p = particles.pressure();
+    double* m = particles.mass();
+    std::int32_t* ph = particles.phase();
+    std::int32_t* mi = particles.material();
+    Vec* v_half = particles.velocity_half();
+    double* rho_half = particles.density_half();
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const Index i = first + static_cast<Index>(k);
+        x[i] = points[k];
+        v[i] = phase != Phase::wall ? core::to_vec<Dim>(b.velocity) : Vec::zero();
+        if (b.velocity_profile == "cantilever_mode")
+            v[i][1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
+                       cantilever_mode_shape(b.mode_length, b.mode_length);
+        v_half[i] = v[i];
+        p[i] = 0.0;
+        if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
+        rho[i] = material::density_from_pressure(mat.eos, p[i]);
+        rho_half[i] = rho[i];
+        m[i] = rho0 * cell_volume;
+        ph[i] = static_cast<std::int32_t>(phase);
+        mi[i] = b.material;
+    }
+    if (!normals.normal.empty()) {
+        auto& fields = particles.fields();
+        Vec* n = fields.template get<Vec>(modules::ThinWallsModule<Dim>::normal_field).data();
+        std::int32_t* far = fields.template get<std::int32_t>(modules::ThinWallsModule<Dim>::far_field).data();
+        std::copy(normals.normal.begin(), normals.normal.end(), n + first);
+        std::copy(normals.far_side.begin(), normals.far_side.end(), far + first);
+    }
+}
+
+}  // namespace
+
+template <int Dim>
+void add_particle_blocks(const io::CaseSpec& spec, double dx, particles::SphParticles<Dim>& particles) {
+    for (const auto& f : spec.fluids)
+        add_block(spec, f, Phase::fluid, dx, particles);
+    for (const auto& s : spec.solids)
+        add_block(spec, s, Phase::solid, dx, particles);
+    for (const auto& w : spec.walls)
+        add_block(spec, w, Phase::wall, dx, particles);
+}
+
+template void add_particle_blocks<2>(const io::CaseSpec&, double, particles::SphParticles<2>&);
+template void add_particle_blocks<3>(const io::CaseSpec&, double, particles::SphParticles<3>&);
+
+}  // namespace grit::sim
