@@ -41,28 +41,12 @@ double JetInlet<Dim>::emit(particles::SphParticles<Dim>& ps, double t, double dt
         travelled_ -= spacing_;
         const auto count = static_cast<Index>(layer_.size());
         const Index first = ps.append(count);
-        Vec* x = ps.position();
-        Vec* v = ps.velocity();
-        double* rho = ps.density();
-        Vec* v_half = ps.velocity_half();
-        double* rho_half = ps.density_half();
-        double* m = ps.mass();
-        std::int32_t* phase = ps.phase();
-        std::int32_t* mat = ps.material();
         // The layer left the section travelled_ / velocity ago, from where the nozzle was then; it has
         // moved with the nozzle since, so it lies ahead of the nozzle's place at t + dt.
         const Vec nozzle = position_ + motion_ * (t + dt);
-        for (Index k = 0; k < count; ++k) {
-            const Index i = first + k;
-            x[i] = nozzle + layer_[static_cast<std::size_t>(k)] + direction_ * travelled_;
-            v[i] = direction_ * spec_.velocity + motion_;
-            rho[i] = density_;
-            v_half[i] = v[i];
-            rho_half[i] = density_;
-            m[i] = mass_;
-            phase[i] = static_cast<std::int32_t>(Phase::fluid);
-            mat[i] = spec_.material;
-        }
+        for (Index k = 0; k < count; ++k)
+            ps.start(first + k, nozzle + layer_[static_cast<std::size_t>(k)] + direction_ * travelled_,
+                     direction_ * spec_.velocity + motion_, density_, mass_, Phase::fluid, spec_.material);
         emitted += mass_ * count;
     }
     return emitted;

@@ -62,6 +62,18 @@ public:
         ++generation_;
         return first;
     }
+    /// Starts new particle i (from append) at position x, velocity v and density rho, with mass m, phase
+    /// and material; the half-step velocity and density start equal to v and rho.
+    void start(Index i, const Vec& x, const Vec& v, double rho, double m, Phase phase, std::int32_t material) {
+        (*position_)[i] = x;
+        (*velocity_)[i] = v;
+        (*velocity_half_)[i] = v;
+        (*density_)[i] = rho;
+        (*density_half_)[i] = rho;
+        (*mass_)[i] = m;
+        (*phase_)[i] = static_cast<std::int32_t>(phase);
+        (*material_)[i] = material;
+    }
     /// Reorders and/or removes particles: new[i] = old[source[i]].
     void gather(const std::vector<Index>& source) {
         fields_.gather(source);

@@ -39,30 +39,16 @@ void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, Phase phase, do
         top += 0.5 * dx;
     }
     const Index first = particles.append(static_cast<Index>(points.size()));
-    Vec* x = particles.position();
-    Vec* v = particles.velocity();
-    double* rho = particles.density();
     double* p = particles.pressure();
-    double* m = particles.mass();
-    std::int32_t* ph = particles.phase();
-    std::int32_t* mi = particles.material();
-    Vec* v_half = particles.velocity_half();
-    double* rho_half = particles.density_half();
     for (std::size_t k = 0; k < points.size(); ++k) {
         const Index i = first + static_cast<Index>(k);
-        x[i] = points[k];
-        v[i] = phase != Phase::wall ? core::to_vec<Dim>(b.velocity) : Vec::zero();
+        Vec v = phase != Phase::wall ? core::to_vec<Dim>(b.velocity) : Vec::zero();
         if (b.velocity_profile == "cantilever_mode")
-            v[i][1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
-                       cantilever_mode_shape(b.mode_length, b.mode_length);
-        v_half[i] = v[i];
-        p[i] = 0.0;
-        if (b.hydrostatic && g_norm > 0.0) p[i] = rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm));
-        rho[i] = material::density_from_pressure(mat.eos, p[i]);
-        rho_half[i] = rho[i];
-        m[i] = rho0 * cell_volume;
-        ph[i] = static_cast<std::int32_t>(phase);
-        mi[i] = b.material;
+            v[1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
+                    cantilever_mode_shape(b.mode_length, b.mode_length);
+        p[i] = b.hydrostatic && g_norm > 0.0 ? rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm)) : 0.0;
+        particles.start(i, points[k], v, material::density_from_pressure(mat.eos, p[i]), rho0 * cell_volume, phase,
+                        b.material);
     }
     if (!normals.normal.empty()) {
         auto& fields = particles.fields();
