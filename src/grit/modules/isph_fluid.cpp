@@ -160,9 +160,9 @@ void IsphModule<Dim>::project() {
     const auto* L = correction_.empty() ? nullptr : correction_.data();
     auto& surface = ps.fields().template get<std::int32_t>("free_surface");
     // The carried divergence and the density invariance go over ISPH's own step, not a shorter one
-    // the grains impose: removing the carried divergence at each DEM
-    // step (80 per fluid step in the sloshing tank) blew the tank up within 7 ms, the invariance
-    // (~ 1/tau^2) on it within 5 ms (docs/theory.md).
+    // the grains impose: removing the carried divergence at each DEM step (80 per fluid step in the
+    // sloshing tank) blew the tank up within 7 ms, the invariance (~ 1/tau^2) on it within 5 ms
+    // (docs/theory.md).
     last_ = projection_.solve(ps, nl, setup_.kernel, projection_settings_, v_star_.data(), L, state_.clock.dt,
                               std::max(state_.clock.dt, relaxation_dt_), surface.data(), porosity());
     ++solves_;
