@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -99,18 +100,18 @@ struct CellGrid {
         }
     }
 
-    /// Cubic cells of `cell_size` covering points x[0..n), no periodic axes. Throws BlowUpError when the
-    /// points have spread so far that the grid would be huge.
+    /// Cubic cells of `cell_size` (larger where the points are dilute: cover_open_axes) covering points
+    /// x[0..n), no periodic axes. Throws BlowUpError when the points have spread so far that the grid
+    /// would be huge.
     static CellGrid covering(const Vec* x, Index n, double cell_size) {
         CellGrid g;
-        double cells = 1.0;
-        for (int k = 0; k < Dim; ++k) g.cover_axis(k, x, n, cell_size, cells);
+        g.cover_open_axes(x, n, cell_size, 1.0);
         return g;
     }
 
     /// A grid over the box [lower, upper) whose `periodic` axes are divided into a whole number of cells
     /// of at least `cell_size` (from lower), and whose other axes cover points x[0..n) with cells of
-    /// `cell_size`. Points are expected inside the box along the periodic axes. Throws InputError when a
+    /// `cell_size` (or larger: cover_open_axes). Points are expected inside the box along the periodic axes. Throws InputError when a
     /// periodic axis is shorter than three cells, BlowUpError when the points have spread so far that the
     /// grid would be huge.
     static CellGrid over_box(const std::array<bool, Dim>& periodic, const Vec& lower, const Vec& upper,
@@ -118,12 +119,9 @@ struct CellGrid {
         CellGrid g;
         g.divides = false;
         g.periodic = periodic;
-        double cells = 1.0;
+        double cells = 1.0;  // of the periodic axes
         for (int k = 0; k < Dim; ++k) {
-            if (!periodic[k]) {
-                g.cover_axis(k, x, n, cell_size, cells);
-                continue;
-            }
+            if (!periodic[k]) continue;
             const double length = upper[k] - lower[k];
             const auto count = static_cast<Index>(std::floor(length / cell_size));
             if (count < 3)
@@ -136,27 +134,46 @@ struct CellGrid {
             g.inverse_cell_size[k] = count / length;
             cells *= count;
         }
+        g.cover_open_axes(x, n, cell_size, cells);
         return g;
     }
 
 private:
-    // Axis k covers x[0..n) with cells of `cell_size` (from just below the lowest point); `cells` is the
-    // running product of the axes' extents, checked against the point count.
-    void cover_axis(int k, const Vec* x, Index n, double size, double& cells) {
-        double lo = parallel::min(n, 1e300, [&](Index i) { return x[i][k]; });
-        double hi = parallel::max(n, -1e300, [&](Index i) { return x[i][k]; });
-        if (n == 0) lo = hi = 0.0;
-        origin[k] = lo - 1e-9 * size;
-        cell_size[k] = size;
-        inverse_cell_size[k] = 1.0 / size;
-        const double extent = (hi - lo) / size + 1.0;
-        cells *= extent;
-        // A blow-up flings particles far away; a dilute flow (grains strewn down a chute) spreads them
-        // too, so a grid of up to 4 million cells (32 MB of cell starts) is always allowed.
-        if (!std::isfinite(extent) || (cells > 64.0 * (n + 1000.0) && cells > 4.0e6))
-            throw core::BlowUpError("particles spread over a region far larger than the case's: "
-                                    "a neighbour grid would need too many cells");
-        dims[k] = static_cast<Index>(extent) + 1;
+    // The open (non-periodic) axes cover x[0..n) from just below the lowest point, with cubic cells of
+    // `size`, doubled while the grid (times `periodic_cells`) would have more than max(64 (n + 1000),
+    // 4 million) cells: grains strewn through a tank are dilute, not blown up, and cells larger than the
+    // reach only add candidates. A spread that needs cells over 8 times `size` (a cluster with an outlier
+    // far away would then have 512 times the candidates in its cells), or a point that is not finite, is a
+    // blow-up.
+    void cover_open_axes(const Vec* x, Index n, double size, double periodic_cells) {
+        Vec lo = Vec::zero(), hi = Vec::zero();
+        for (int k = 0; k < Dim; ++k) {
+            if (periodic[k] || n == 0) continue;
+            constexpr double nan_as = -std::numeric_limits<double>::infinity();  // makes the grid infinite
+            lo[k] = parallel::min(n, 1e300, [&](Index i) { return std::isnan(x[i][k]) ? nan_as : x[i][k]; });
+            hi[k] = parallel::max(n, -1e300, [&](Index i) { return x[i][k]; });
+        }
+        auto cells_at = [&](double s) {
+            double cells = periodic_cells;
+            for (int k = 0; k < Dim; ++k)
+                if (!periodic[k]) cells *= (hi[k] - lo[k]) / s + 1.0;
+            return cells;
+        };
+        const double budget = std::max(64.0 * (static_cast<double>(n) + 1000.0), 4.0e6);
+        double s = size;
+        while (!(cells_at(s) <= budget)) {
+            s *= 2.0;
+            if (!std::isfinite(cells_at(s)) || s > 8.0 * size)
+                throw core::BlowUpError("particles spread over a region far larger than the case's: "
+                                        "a neighbour grid would need too many cells");
+        }
+        for (int k = 0; k < Dim; ++k) {
+            if (periodic[k]) continue;
+            origin[k] = lo[k] - 1e-9 * s;
+            cell_size[k] = s;
+            inverse_cell_size[k] = 1.0 / s;
+            dims[k] = static_cast<Index>((hi[k] - lo[k]) / s + 1.0) + 1;
+        }
     }
 };
 

@@ -291,7 +291,7 @@ void Simulation<Dim>::compute_time_step() {
 }
 
 template <int Dim>
-void Simulation<Dim>::check_health() {
+std::string Simulation<Dim>::find_unhealthy() const {
     const auto& ps = state_.particles;
     const Vec* x = ps.position();
     const Vec* v = ps.velocity();
@@ -326,15 +326,24 @@ void Simulation<Dim>::check_health() {
                            fmt::join(std::vector<double>(x[bad].c, x[bad].c + Dim), ", "), what);
     }
     for (auto it = modules_.begin(); what.empty() && it != modules_.end(); ++it) what = (*it)->check_health();
+    return what;
+}
+
+template <int Dim>
+void Simulation<Dim>::check_health() {
+    const std::string what = find_unhealthy();
+    if (!what.empty()) report_blow_up(what);
     const auto& clock = state_.clock;
-    if (what.empty()) {
-        if (clock.step % spec_.check_interval == 0) {
-            last_good_ = ps;
-            last_good_time_ = clock.time;
-            last_good_step_ = clock.step;
-        }
-        return;
+    if (clock.step % spec_.check_interval == 0) {
+        last_good_ = state_.particles;
+        last_good_time_ = clock.time;
+        last_good_step_ = clock.step;
     }
+}
+
+template <int Dim>
+void Simulation<Dim>::report_blow_up(const std::string& what) {
+    const auto& clock = state_.clock;
     std::string message = fmt::format("numerical blow-up at step {} (t = {:.9g} s): {}", clock.step, clock.time, what);
     if (options_.write_files && has_sph_) {
         const auto file = fmt::format("snapshots/{}_last_good_{:06}.vtu", spec_.name, last_good_step_);
@@ -343,6 +352,7 @@ void Simulation<Dim>::check_health() {
         message += fmt::format("; last good state (step {}, t = {:.9g} s) written to {}", last_good_step_,
                                last_good_time_, (options_.output_dir / file).string());
     }
+    blow_up_reported_ = true;
     throw core::BlowUpError(message);
 }
 
@@ -364,7 +374,15 @@ RunEstimate Simulation<Dim>::estimate() {
 template <int Dim>
 void Simulation<Dim>::step() {
     const double dt = state_.clock.dt;  // the time_step stage replaces clock.dt with the next step's value
-    pipeline_.run();
+    try {
+        pipeline_.run();
+    } catch (const core::BlowUpError& e) {
+        if (blow_up_reported_) throw;
+        // Found inside a stage (a neighbour grid over a NaN position): name the step, the culprit where
+        // the health check finds one, and write the last good snapshot, as the health check does.
+        const std::string found = find_unhealthy();
+        report_blow_up(found.empty() ? std::string(e.what()) : found + " (" + e.what() + ")");
+    }
     state_.clock.time += dt;
     ++state_.clock.step;
     particle_steps_ += static_cast<double>(state_.particles.size());

@@ -126,6 +126,10 @@ public:
 private:
     void check_periodic_lengths() const;
     void check_health();
+    /// The first particle, grain or module state that is not healthy, described; empty when all are.
+    std::string find_unhealthy() const;
+    /// Throws core::BlowUpError naming the step, `what` and the last good snapshot (written first).
+    [[noreturn]] void report_blow_up(const std::string& what);
     void compute_time_step();
     void open_output(bool restart);
     void write_output();
@@ -148,6 +152,7 @@ private:
     particles::SphParticles<Dim> last_good_;
     double last_good_time_ = 0.0;
     long last_good_step_ = 0;
+    bool blow_up_reported_ = false;  ///< set once report_blow_up has thrown, so step() passes it on as it is
 
     OutputPlace place_;
     double next_output_ = 0.0, next_checkpoint_ = 0.0;

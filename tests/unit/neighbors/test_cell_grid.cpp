@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <vector>
@@ -78,6 +79,34 @@ TEST(CellGrid, CoveringHasCubicCellsOverThePoints) {
     // Outside points go to the edge cells.
     EXPECT_EQ(g.coords({{-10.0, 10.0}})[0], 0);
     EXPECT_EQ(g.coords({{-10.0, 10.0}})[1], 3);
+}
+
+TEST(CellGrid, DiluteGrainsGetLargerCellsNotABlowUp) {
+    // 1000 grains of 0.5 mm strewn through a 0.3 x 0.15 x 0.15 m tank: cells of 0.5 mm would number 5.5e7,
+    // over the budget of max(64 (n + 1000), 4e6); the cells double until the grid fits (2 mm: 8.6e5).
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<grit::core::Vec<3>> x(1000);
+    for (auto& p : x) p = {{0.3 * u(rng), 0.15 * u(rng), 0.15 * u(rng)}};
+    x[0] = {{0.0, 0.0, 0.0}};
+    x[1] = {{0.3, 0.15, 0.15}};
+    const auto g = CellGrid<3, CellOrder::x_slowest>::covering(x.data(), 1000, 0.5e-3);
+    EXPECT_EQ(g.cell_size[0], 2e-3);
+    EXPECT_EQ(g.cell_size[2], 2e-3);
+    EXPECT_LE(g.cell_count(), 4'000'000);
+    EXPECT_EQ(g.dims[0], 152);  // 0.3 / 2e-3 + 1 = 151, + 1
+    // The same on the open axes of a box with a periodic one.
+    const auto b = CellGrid<3, CellOrder::x_slowest>::over_box({false, true, false}, {{0.0, 0.0, 0.0}},
+                                                               {{0.3, 0.15, 0.15}}, x.data(), 1000, 0.5e-3);
+    EXPECT_EQ(b.dims[1], 300);
+    EXPECT_EQ(b.cell_size[0], 2e-3);  // 151 x 300 x 76 cells: the periodic axis keeps its 300
+    EXPECT_LE(b.cell_count(), 4'000'000);
+    // A point flung 100 m away (cells 8 times the reach would not do: 3.6e7 of them) or not finite is a
+    // blow-up.
+    x[2] = {{100.0, 0.0, 0.0}};
+    EXPECT_THROW((CellGrid<3>::covering(x.data(), 1000, 0.5e-3)), grit::core::BlowUpError);
+    x[2] = {{std::nan(""), 0.0, 0.0}};
+    EXPECT_THROW((CellGrid<3>::covering(x.data(), 1000, 0.5e-3)), grit::core::BlowUpError);
 }
 
 TEST(CellGrid, PeriodicAxesHoldAWholeNumberOfCells) {
