@@ -32,7 +32,16 @@ constexpr int exit_blow_up = 3;
 
 int run_command(const std::string& case_file, const std::vector<std::string>& sets, const std::string& out,
                 double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart) {
-    std::vector<std::string> overrides = sets;
+    // A restart applies the checkpointed run's --set first (a sweep's parameter, a changed grain size), so
+    // that it continues the same physics; its own --set come after and win.
+    std::vector<std::string> overrides;
+    if (!restart.empty()) {
+        overrides = grit::sim::checkpoint_overrides(grit::sim::resolve_checkpoint(restart),
+                                                    grit::io::read_case(case_file, sets).name);
+        if (!quiet && !overrides.empty())
+            fmt::print(stderr, "restart: the checkpointed run's --set apply first: {}\n", fmt::join(overrides, " "));
+    }
+    overrides.insert(overrides.end(), sets.begin(), sets.end());
     if (has_end_time) overrides.push_back(fmt::format("time.end={:.17g}", end_time));
     const grit::io::CaseSpec spec = grit::io::read_case(case_file, overrides);
     if (threads > 0) grit::parallel::set_threads(threads);

@@ -575,6 +575,23 @@ else
     fail "SIGINT mid-run: a checkpoint appeared" "none within 30 s"
 fi
 
+# A restart applies the checkpointed run's --set again: restarted with none of its own (the demo's own
+# time.end is 3e-5), the killed run still stops at 1.2e-5 with the straight run's outputs.
+CARRIED=$W/carried
+if start_and_wait_for_checkpoint "$CARRIED"; then
+    kill -KILL "$BG_PID" 2>/dev/null || true
+    wait "$BG_PID" 2>/dev/null || true
+    grit run "$DEMO" --restart "$CARRIED" --threads 2
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$CARRIED") &&
+        grep -q "the checkpointed run's --set apply first: time.end=1.2e-5" "$W/stderr"; then
+        pass "--restart without --set: the checkpointed run's --set apply, outputs identical to the straight run"
+    else
+        fail "--restart without --set: the checkpointed run's --set apply" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+else
+    fail "SIGKILL mid-run (carried --set): a checkpoint appeared" "none within 30 s"
+fi
+
 # A finished run extended with --set time.end: rows continue, none repeated.
 grit run "$DEMO" --restart "$STRAIGHT" "${DEMO_SET[@]}" --set time.end=1.4e-5
 if [[ $RC -eq 0 ]] && "${JSON_PY:-python3}" - "$STRAIGHT/series.csv" <<'PYEOF'

@@ -175,6 +175,21 @@ std::filesystem::path resolve_checkpoint(const std::filesystem::path& path) {
     return found.back();
 }
 
+std::vector<std::string> checkpoint_overrides(const std::filesystem::path& checkpoint, const std::string& case_name) {
+    std::vector<std::string> overrides;
+    try {
+        const auto h5 = io::Hdf5File::open(checkpoint);
+        // Another case's checkpoint: its keys may not exist here, and the restart refuses it anyway.
+        if (!h5.has_attribute("case_name") || h5.read_string("case_name") != case_name) return overrides;
+        if (!h5.has_attribute("override_count")) return overrides;  // written before grit kept them
+        const std::int64_t n = h5.read_int("override_count");
+        for (std::int64_t k = 0; k < n; ++k) overrides.push_back(h5.read_string(fmt::format("override {}", k)));
+    } catch (const std::exception&) {
+        return {};  // not a readable checkpoint: the restart itself says so, naming the file
+    }
+    return overrides;
+}
+
 template <int Dim>
 Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     : spec_(std::move(spec)),
@@ -489,6 +504,10 @@ void Simulation<Dim>::save_checkpoint(const std::filesystem::path& file) {
         h5.write("case_name", spec_.name);
         h5.write("case_file", spec_.source.string());
         h5.write("case_text", read_text(spec_.source));
+        // The --set overrides: a restart applies them again before its own (checkpoint_overrides).
+        h5.write("override_count", static_cast<std::int64_t>(spec_.overrides.size()));
+        for (std::size_t k = 0; k < spec_.overrides.size(); ++k)
+            h5.write(fmt::format("override {}", k), spec_.overrides[k]);
         for (const auto& [key, value] : state_keys(spec_)) h5.write("state_key " + key, value);
         const auto& clock = state_.clock;
         h5.write("time", clock.time);

@@ -174,4 +174,8 @@ RunSummary run_case(const io::CaseSpec& spec, const RunOptions& options);
 /// (highest step) `checkpoints/*.h5` in the run folder `path`. Throws core::InputError if there is none.
 std::filesystem::path resolve_checkpoint(const std::filesystem::path& path);
 
+/// The --set overrides the checkpointed run of case `case_name` was started with, in order (none for a
+/// checkpoint of another case, one written before they were kept, or a file that is not a checkpoint).
+std::vector<std::string> checkpoint_overrides(const std::filesystem::path& checkpoint, const std::string& case_name);
+
 }  // namespace grit::sim
