@@ -111,9 +111,9 @@ struct CellGrid {
 
     /// A grid over the box [lower, upper) whose `periodic` axes are divided into a whole number of cells
     /// of at least `cell_size` (from lower), and whose other axes cover points x[0..n) with cells of
-    /// `cell_size` (or larger: cover_open_axes). Points are expected inside the box along the periodic axes. Throws InputError when a
-    /// periodic axis is shorter than three cells, BlowUpError when the points have spread so far that the
-    /// grid would be huge.
+    /// `cell_size` (or larger: cover_open_axes). Points are expected inside the box along the periodic
+    /// axes. Throws InputError when a periodic axis is shorter than three cells, BlowUpError when the
+    /// points have spread so far that the grid would be huge.
     static CellGrid over_box(const std::array<bool, Dim>& periodic, const Vec& lower, const Vec& upper,
                              const Vec* x, Index n, double cell_size) {
         CellGrid g;
