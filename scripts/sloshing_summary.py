@@ -49,7 +49,10 @@ def summary(out):
             reached = t
     rows["water front along the floor at 0.12 s [m]"] = "-" if front is None else f"{front:.3f}"
     rows["water at the right wall [s]"] = "-" if reached is None else f"{reached:.2f}"
-    grains = read_vtu(times_of(str(out / (pathlib.Path(fluid_pvd).stem + "_grains.pvd")))[-1][1])
+    grain_outputs = times_of(str(out / (pathlib.Path(fluid_pvd).stem + "_grains.pvd")))
+    first = next((t for t, f in grain_outputs if read_vtu(f)["Points"][:, 0].max() > AT_WALL), None)
+    rows["first grain at the right wall (x > 0.240 m) [s]"] = "-" if first is None else f"{first:.2f}"
+    grains = read_vtu(grain_outputs[-1][1])
     rows["grains' mean height at the end [mm]"] = f"{1e3 * grains['Points'][:, 2].mean():.1f}"
     rows["farthest grain at the end, x [m]"] = f"{grains['Points'][:, 0].max():.3f}"
     with open(out / "impacts.csv") as f:
@@ -58,13 +61,25 @@ def summary(out):
     speed = np.array([float(r["speed"]) for r in impacts]) if impacts else np.zeros(1)
     rows["impacts / mean angle [deg] / mean speed [m/s]"] = (
         f"{len(impacts)} / {angle.mean():.1f} / {speed.mean():.2f}")
-    walls = read_vtu(times_of(str(out / (pathlib.Path(fluid_pvd).stem + "_walls.pvd")))[-1][1])
-    centre = walls["Points"].reshape(-1, 3, 3).mean(axis=1)
+    wall_outputs = times_of(str(out / (pathlib.Path(fluid_pvd).stem + "_walls.pvd")))
+    walls = read_vtu(wall_outputs[-1][1])
+    centre = walls["Points"][walls["connectivity"].reshape(-1, 3)].mean(axis=1)
     wear = walls["wear_mass"]
     floor = np.abs(centre[:, 2]) < 1e-9
     right = np.abs(centre[:, 0] - TANK_LENGTH) < 1e-9
     rows["wear at the end: total / floor / right wall [kg]"] = (
         f"{wear.sum():.3g} / {wear[floor].sum():.3g} / {wear[right].sum():.3g}")
+    # Where on the right wall (the paper's maps, Figs. 6-7): its wear in height bands, and how high the
+    # grains hit it. Meaningful with a fine mesh (tank_fine.stl: 5 mm squares).
+    z = centre[right, 2]
+    worn = wear[right] > 0.0
+    bands = [0.0, 0.01, 0.02, 0.05, 0.1001]
+    share = [wear[right][(z >= a) & (z < b)].sum() / wear[right].sum() if worn.any() else 0.0
+             for a, b in zip(bands, bands[1:])]
+    rows["right wall's wear at 0-1 / 1-2 / 2-5 / 5-10 cm height [%]"] = (
+        " / ".join(f"{100 * v:.0f}" for v in share) if worn.any() else "-")
+    rows["right wall: impacts / highest worn square's centre [mm]"] = (
+        f"{int(walls['impact_count'][right].sum())} / " + (f"{1e3 * z[worn].max():.1f}" if worn.any() else "-"))
     rows["steps / wall time [s]"] = f"{run['steps']} / {run['wall_time_s']:.0f}"
     return rows
 
