@@ -18,11 +18,12 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
     reach_.resize(static_cast<std::size_t>(ng));
     for (Index i = 0; i < ng; ++i) reach_[static_cast<std::size_t>(i)] = parameters_.radius_factor * 2.0 * radius[i];
     const std::int32_t* phase = particles.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
-    // Each fluid particle's grains closer than R_c,i, in ascending grain index.
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), wall = static_cast<std::int32_t>(Phase::wall);
+    // Each fluid or wall particle's grains closer than R_c,i, in ascending grain index. The walls only
+    // complete a grain's kernel: its immersed fraction and -grad p at it (exchange_forces).
     pairs_.build(
-        particles.position(), n, [&](Index a) { return phase[a] == fluid; }, grains.position(), reach_.data(), ng, 0.0,
-        box_);
+        particles.position(), n, [&](Index a) { return phase[a] == fluid || phase[a] == wall; }, grains.position(),
+        reach_.data(), ng, 0.0, box_);
 
     const std::size_t np = pairs_.pair_count();
     weight_.resize(np);
@@ -63,7 +64,13 @@ void FluidGrainCoupling<Dim>::compute_porosity(const dem::GrainSet<Dim>& grains,
     const double* radius = grains.radius();
     const Index* idx = pairs_.indices();
     const double floor = parameters_.min_porosity;
+    const std::int32_t* phase = particles.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     parallel::for_each(particles.size(), [&](Index a) {
+        if (phase[a] != fluid) {
+            porosity[a] = 1.0;
+            return;
+        }
         double solid = 0.0;  // sum_i V_i W_ai
         for (Index s = pairs_.begin(a); s < pairs_.end(a); ++s)
             solid += grain_volume<Dim>(radius[idx[s]]) * weight_[static_cast<std::size_t>(s)];
@@ -104,18 +111,27 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
     const Vec* x = particles.position();
     const Vec* xg = grains.position();
     const double mu = prm.viscosity;
+    const std::int32_t* phase = particles.phase();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     std::visit(
         [&](const auto& type) {
             using K = std::decay_t<decltype(type)>;
             parallel::for_each(ng, [&](Index i) {
                 const auto gi = static_cast<std::size_t>(i);
                 const Index first = grain_start_[gi], last = grain_start_[gi + 1];
-                double shepard = 0.0, eps = 0.0, pressure = 0.0;
+                // Wall particles (their Adami pressure: the fluid's, continued into the wall) complete the
+                // kernel for the pressure and the immersed fraction; v_f and eps are the water's alone.
+                double shepard = 0.0, eps = 0.0, pressure = 0.0, walls = 0.0, wall_pressure = 0.0;
                 Vec vf = Vec::zero();
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
                     const double vw = m[a] / rho[a] * weight_[s];  // V_a W_ia
+                    if (phase[a] != fluid) {
+                        walls += vw;
+                        wall_pressure += p[a] * vw;
+                        continue;
+                    }
                     shepard += vw;
                     eps += porosity[a] * vw;
                     vf += v[a] * vw;
@@ -129,7 +145,10 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 const double inv = 1.0 / shepard;
                 eps *= inv;
                 vf *= inv;
-                pressure *= inv;
+                if (walls > 0.0)
+                    pressure = (pressure + wall_pressure) / (shepard + walls);
+                else
+                    pressure *= inv;
                 const K kernel(0.5 * reach_[gi]);
                 const double eta2 = 0.01 * kernel.h * kernel.h;
                 Vec minus_grad_p = Vec::zero(), div_tau = Vec::zero();
@@ -141,6 +160,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                     const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_i W_ia = xia f
                     const double volume_a = m[a] / rho[a];
                     minus_grad_p -= xia * (volume_a * (p[a] - pressure) * f);
+                    if (phase[a] != fluid) continue;  // a wall: no velocity of the water's
                     // Morris et al. (1997): lap v = sum_a 2 V_a (v_i - v_a) r^2 f / (r^2 + eta^2), v_i = v_f.
                     div_tau += (vf - v[a]) * (mu * 2.0 * volume_a * r2 * f / (r2 + eta2));
                 }
@@ -154,10 +174,12 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 in.fluid_density = prm.fluid_density;
                 in.viscosity = prm.viscosity;
                 const double c = drag_coefficient(prm.drag, in);
-                // A grain partly out of the fluid (S_i < 1: entering a jet, at a free surface) takes the
-                // immersed fraction S_i of the force; the reaction (eq. 50) then gives no particle more
-                // than V_i W_ai times it, however few particles are near.
-                const double immersed = std::min(shepard, 1.0);
+                // A grain partly out of the fluid (entering a jet, at a free surface) takes the immersed
+                // fraction of the force: the part of its kernel that is not air, water S_i and walls
+                // (a grain on the floor under water is wholly immersed, though walls fill part of its
+                // kernel). The reaction (eq. 50) then gives no particle more than V_i W_ai times it,
+                // however few particles are near.
+                const double immersed = std::min(shepard + walls, 1.0);
                 const Vec drag = u * (c * immersed);                                    // eq. (44)
                 const Vec force = (minus_grad_p + div_tau) * (volume * immersed) + drag;  // eq. (42)
                 grain_.porosity[gi] = eps;
@@ -180,7 +202,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
         particles.size(), 0.0,
         [&](Index a) {
             const Index first = pairs_.begin(a), last = pairs_.end(a);
-            if (first == last) return 0.0;
+            if (first == last || phase[a] != fluid) return 0.0;
             Vec sum = Vec::zero();
             double rate = 0.0;  // sum_i c_i W_ai / S_i
             for (Index s = first; s < last; ++s) {

@@ -3,7 +3,9 @@
 // interpolated pressure and viscous force plus drag) and its reaction spread back over the fluid
 // particles with the same kernel weights, so the exchange conserves momentum to round-off.
 //
-// Only fluid SPH particles take part: walls and SPH solids meet grains through the penalty contact.
+// Only fluid SPH particles exchange forces with grains: walls and SPH solids meet grains through the
+// penalty contact. Wall particles are paired too, to complete a grain's kernel near a wall: they count
+// in its immersed fraction and, with their Adami pressure, in -grad p at the grain.
 // Grain i reaches the fluid particles a within R_c,i = radius_factor d_i with the SPH kernel of
 // smoothing length h_c,i = R_c,i / 2 (W_ai below).
 #pragma once
@@ -50,8 +52,8 @@ public:
                        const neighbors::PeriodicBox<Dim>& box = {})
         : parameters_(parameters), kernel_type_(kernel_type), box_(box) {}
 
-    /// Lists the fluid particles within R_c,i of every grain and the weights W_ai, at the current
-    /// positions. Valid while neither set changes.
+    /// Lists the fluid and wall particles within R_c,i of every grain and the weights W_ai, at the
+    /// current positions. Valid while neither set changes.
     void find_pairs(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles);
 
     /// eps_a = max(1 - sum_i V_i W_ai, min_porosity) for fluid particles (eq. 20), 1 for the others.
