@@ -160,7 +160,8 @@ int main(int argc, char** argv) {
     auto* threads_opt = run->add_option("--threads", threads_text, "number of threads")->type_name("N");
     run->add_flag("--quiet", quiet, "no progress line or final message");
     run->add_option("--restart", restart,
-                    "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file");
+                    "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file; "
+                    "the run's own --set apply again, before these");
 
     auto* sweep = app.add_subcommand("sweep", "run a case over the product of parameter lists (sweep.csv)");
     std::vector<std::string> params;
