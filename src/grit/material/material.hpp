@@ -1,6 +1,7 @@
 // A material: its equation of state and the per-material coefficients the SPH sums use.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -27,6 +28,12 @@ struct Material {
 
     double reference_density() const { return material::reference_density(eos); }
     double sound_speed() const { return reference_sound_speed(eos); }
+    /// The fastest wave [m/s]: c0 in a fluid, the longitudinal c_L = sqrt(c0^2 + 4G / (3 rho0)) in a solid
+    /// (up to 1.4x c0 in rock), which the time step and the runaway check must follow (docs/theory.md).
+    double signal_speed() const {
+        if (phase != Phase::solid) return sound_speed();
+        return std::sqrt(sound_speed() * sound_speed() + 4.0 * solid.shear_modulus / (3.0 * reference_density()));
+    }
 };
 
 }  // namespace grit::material

@@ -29,14 +29,9 @@ SphModule<Dim>::SphModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setu
     for (const auto& m : spec.materials) {
         fluid_.materials.push_back({m.sound_speed(), m.reference_density(), m.artificial_viscosity_alpha,
                                     m.artificial_viscosity_beta, m.dynamic_viscosity / m.reference_density()});
-        // The time step of a solid follows its fastest wave, the longitudinal one,
-        // c_L = sqrt(c0^2 + 4G / (3 rho0)), not the bulk c0 (up to 1.4x slower for rock): with c0, the
-        // free edges of a sandstone bar in tension rang and blew up at C_F = 0.2 (docs/theory.md).
-        const double c_l = m.phase == Phase::solid
-                               ? std::sqrt(m.sound_speed() * m.sound_speed() +
-                                           4.0 * m.solid.shear_modulus / (3.0 * m.reference_density()))
-                               : m.sound_speed();
-        signal_speed_.push_back(c_l);
+        // The time step of a solid follows its longitudinal wave, not the bulk c0: with c0, the free
+        // edges of a sandstone bar in tension rang and blew up at C_F = 0.2 (docs/theory.md).
+        signal_speed_.push_back(m.signal_speed());
     }
 }
 

@@ -200,13 +200,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
     if (spec_.dimension != Dim) throw std::logic_error("case dimension does not match the simulation");
     sph::make_kernel<Dim>(spec_.kernel, setup_.smoothing_length, kernel_);
     double fastest = 0.0;
-    for (const auto& m : spec_.materials) {
-        const double c_l = m.phase == Phase::solid
-                               ? std::sqrt(m.sound_speed() * m.sound_speed() +
-                                           4.0 * m.solid.shear_modulus / (3.0 * m.reference_density()))
-                               : m.sound_speed();
-        fastest = std::max(fastest, c_l);
-    }
+    for (const auto& m : spec_.materials) fastest = std::max(fastest, m.signal_speed());
     for (const auto& in : spec_.inlets) fastest = std::max(fastest, in.velocity);
     setup_.max_speed = spec_.max_speed > 0.0 ? spec_.max_speed : 2.0 * fastest;
 
