@@ -145,6 +145,8 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 const double inv = 1.0 / shepard;
                 eps *= inv;
                 vf *= inv;
+                // p_i over water and walls; without walls the water's own form, so that a case without
+                // wall particles near its grains keeps its results bit for bit.
                 if (walls > 0.0)
                     pressure = (pressure + wall_pressure) / (shepard + walls);
                 else
