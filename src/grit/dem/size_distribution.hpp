@@ -19,6 +19,7 @@ struct FixedSize {
     static constexpr std::string_view name = "fixed";
     double diameter = 0.0;
     double draw(std::mt19937_64&) const noexcept { return diameter; }
+    double smallest() const noexcept { return diameter; }
     double largest() const noexcept { return diameter; }
 };
 
@@ -32,6 +33,7 @@ struct UniformSize {
         const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
         return min + (max - min) * u;
     }
+    double smallest() const noexcept { return min; }
     double largest() const noexcept { return max; }
 };
 
@@ -49,6 +51,7 @@ struct NormalSize {
             if (d >= min && d <= max) return d;
         }
     }
+    double smallest() const noexcept { return min; }
     double largest() const noexcept { return max; }
 };
 
@@ -78,6 +81,12 @@ struct DiscreteSize {
             sum += n * diameters[i];
         }
         return sum / count;
+    }
+    double smallest() const noexcept {
+        double d = diameters.empty() ? 0.0 : diameters.front();
+        for (const double x : diameters)
+            d = std::min(d, x);
+        return d;
     }
     double largest() const noexcept {
         double d = 0.0;
@@ -125,6 +134,11 @@ inline void validate(const SizeDistribution& distribution) {
 /// One diameter [m] from the distribution.
 inline double draw_diameter(const SizeDistribution& distribution, std::mt19937_64& rng) {
     return std::visit([&](const auto& d) { return d.draw(rng); }, distribution);
+}
+
+/// The smallest diameter the distribution can give [m].
+inline double smallest_diameter(const SizeDistribution& distribution) {
+    return std::visit([](const auto& d) { return d.smallest(); }, distribution);
 }
 
 /// The largest diameter the distribution can give [m].

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "grit/core/error.hpp"
+#include "grit/dem/grain_set.hpp"
+#include "grit/dem/size_distribution.hpp"
 
 namespace grit::io {
 
@@ -105,21 +107,64 @@ double shape_particle_bound(const ShapeSpec& shape, int dim, double dx) {
     return 0.0;
 }
 
+double domain_particle_room(const CaseSpec& c) {
+    if (c.domain_min.size() < static_cast<std::size_t>(c.dimension) || !(c.particle_spacing > 0.0))
+        return std::numeric_limits<double>::infinity();
+    double room = 1.1;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(c.dimension); ++k)
+        room *= (c.domain_max[k] - c.domain_min[k]) / c.particle_spacing + 1.0;
+    return room;
+}
+
+double domain_grain_room(const CaseSpec& c, double d) {
+    if (c.domain_min.size() < static_cast<std::size_t>(c.dimension) || !(d > 0.0))
+        return std::numeric_limits<double>::infinity();
+    double room = 1.5;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(c.dimension); ++k)
+        room *= (c.domain_max[k] - c.domain_min[k]) / d;
+    return room;
+}
+
 ParticleEstimate estimate_particles(const CaseSpec& c) {
     ParticleEstimate e;
     const int dim = c.dimension;
     const double dx = c.particle_spacing;
-    for (const auto* blocks : {&c.fluids, &c.solids, &c.walls})
-        for (const auto& b : *blocks) e.sph += shape_particle_bound(b.shape, dim, dx);
+    double blocks = 0.0;
+    for (const auto* list : {&c.fluids, &c.solids, &c.walls})
+        for (const auto& b : *list)
+            blocks += shape_particle_bound(b.shape, dim, dx);
     for (const auto& in : c.inlets) e.inlets += inlet_bound(in, dim, dx, c.end_time);
-    e.sph += e.inlets;
-    for (const auto& g : c.grains) e.grains += grain_count(g, dim);
+    e.inlets_held = std::min(e.inlets, std::max(0.0, domain_particle_room(c) - blocks));
+    e.sph = blocks + e.inlets_held;
+
+    double placed = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (const auto& g : c.grains) {
+        placed += grain_count(g, dim);
+        smallest = std::min(smallest, dem::smallest_diameter(g.size));
+    }
     if (c.abrasive.enabled && c.abrasive.spacing > 0.0) {
         // One grain per column of the jet that enters by time.end (and one that joins ahead of it).
         const auto& jet = c.inlets[static_cast<std::size_t>(c.abrasive.inlet)];
         const double duration = std::min(c.abrasive.stop, c.end_time) - c.abrasive.start;
-        if (duration > 0.0) e.grains += 2.0 + std::floor(jet.velocity * duration / c.abrasive.spacing);
+        if (duration > 0.0) e.grains_fed += 2.0 + std::floor(jet.velocity * duration / c.abrasive.spacing);
+        smallest = std::min(smallest, dem::smallest_diameter(c.abrasive.size));
     }
+    for (const auto& f : c.grain_feeds) {
+        // Insertions at start + k interval up to the earlier of stop and time.end; each inserts the nearest
+        // whole number of grains to the mass due (at most its mass over the smallest grain's, plus one).
+        const double duration = std::min(f.stop, c.end_time) - f.start;
+        if (!(duration >= 0.0) || !(f.interval > 0.0)) continue;
+        const double insertions = std::floor(duration / f.interval + 1e-9) + 1.0;
+        const double d = dem::smallest_diameter(f.size);
+        const double density = c.grain_materials[static_cast<std::size_t>(f.material)].density;
+        const double m = dim == 2 ? dem::grain_mass<2>(density, 0.5 * d) : dem::grain_mass<3>(density, 0.5 * d);
+        double n = insertions * (f.mass_flow_rate * f.interval / m + 1.0);
+        if (f.count > 0) n = std::min(n, static_cast<double>(f.count));
+        e.grains_fed += n;
+        smallest = std::min(smallest, d);
+    }
+    e.grains = placed + e.grains_fed;
+    if (e.grains_fed > 0.0) e.grains = std::min(e.grains, std::max(placed, domain_grain_room(c, smallest)));
     e.bytes = e.sph * (dim == 2 ? sph_bytes_2d : sph_bytes_3d) + e.grains * grain_bytes;
     return e;
 }
@@ -129,7 +174,7 @@ void check_particle_budget(const CaseSpec& c) {
     if (e.total() <= static_cast<double>(c.max_particles)) return;
     // Name the key that makes the most: the SPH spacing, or the grains block with the most grains.
     std::string cause = fmt::format("numerics.particle_spacing = {} m", c.particle_spacing);
-    if (e.inlets > 0.5 * e.sph) cause += fmt::format(" with inlets until time.end = {} s", c.end_time);
+    if (e.inlets_held > 0.5 * e.sph) cause += fmt::format(" with inlets until time.end = {} s", c.end_time);
     double most = e.sph;
     for (const auto& g : c.grains) {
         const double n = grain_count(g, c.dimension);

@@ -7,14 +7,26 @@
 
 namespace grit::io {
 
-/// Particle counts of a case (doubles: a tiny spacing gives counts far beyond any integer type).
+/// Particle counts of a case (doubles: a tiny spacing gives counts far beyond any integer type): the most
+/// that exist at once, which is what the memory and the cost of a step follow.
 struct ParticleEstimate {
-    double sph = 0.0;     ///< fluid, solid and wall particles plus `inlets`
-    double inlets = 0.0;  ///< every particle the inlets emit by time.end (none are taken off for outlets)
-    double grains = 0.0;  ///< DEM grains
-    double bytes = 0.0;   ///< memory of both, fields and neighbour lists (an estimate, see the .cpp)
+    double sph = 0.0;          ///< fluid, solid and wall particles plus `inlets_held`
+    double inlets = 0.0;       ///< every particle the inlets emit by time.end
+    double inlets_held = 0.0;  ///< the most of `inlets` in the domain at once (its room the blocks leave)
+    double grains_fed = 0.0;   ///< every grain the abrasive and the grain feeds insert by time.end
+    double grains = 0.0;       ///< DEM grains at once: the blocks' plus `grains_fed`, at most the domain's room
+    double bytes = 0.0;        ///< memory of both, fields and neighbour lists (an estimate, see the .cpp)
     double total() const { return sph + grains; }
 };
+
+/// Room for particles of spacing dx in the domain box: 10 % above its lattice points (water compressed by
+/// a jet's impact holds a little more). What inlets emit beyond it has left through outlets or the
+/// domain's faces: a jet run for milliseconds holds a few thousand particles, not the millions it emits.
+double domain_particle_room(const CaseSpec& c);
+
+/// Room for grains of diameter d in the domain box: its volume over d^Dim, times 1.5 (above the densest
+/// packing of discs, 1.155, and of spheres, 1.414).
+double domain_grain_room(const CaseSpec& c, double d);
 
 /// Upper bound of the lattice points (spacing dx) that `shape` holds in `dim` dimensions: exact for
 /// boxes, a little above the count for discs, spheres, cylinders and tanks.
