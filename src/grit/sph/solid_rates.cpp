@@ -7,10 +7,10 @@
 
 #include "grit/neighbors/half_lists.hpp"
 #include "grit/parallel/parallel.hpp"
-#include <Eigen/Dense>
 
 #include "grit/sph/artificial_stress.hpp"
 #include "grit/sph/artificial_viscosity.hpp"
+#include "grit/sph/correction_matrix.hpp"
 #include "grit/sph/tensor_ops.hpp"
 
 namespace grit::sph {
@@ -132,18 +132,8 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         int e = 0;
         for (int i = 0; i < Dim; ++i)
             for (int j = i; j < Dim; ++j, ++e) mm[i][j] = mm[j][i] = sum.m[e];
-        SymTensor3 l = SymTensor3::identity();  // where the moment matrix is singular (an isolated particle)
-        if constexpr (Dim == 2) {
-            const double det = mm[0][0] * mm[1][1] - mm[0][1] * mm[1][0];
-            if (std::abs(det) > 1e-6) l = {mm[1][1] / det, mm[0][0] / det, 1.0, -mm[0][1] / det, 0.0, 0.0};
-        } else {
-            Eigen::Matrix3d m3;
-            m3 << mm[0][0], mm[0][1], mm[0][2], mm[1][0], mm[1][1], mm[1][2], mm[2][0], mm[2][1], mm[2][2];
-            if (std::abs(m3.determinant()) > 1e-6) {
-                const Eigen::Matrix3d inv = m3.inverse();
-                l = {inv(0, 0), inv(1, 1), inv(2, 2), inv(0, 1), inv(1, 2), inv(2, 0)};
-            }
-        }
+        // M^-1 with M's eigenvalues bounded below: a fragment of a few particles keeps a bounded L.
+        const SymTensor3 l = bounded_correction<Dim>(mm);
         corr[a] = l;
         // M = (sigma_a / rho_a^2) L_a, sigma = -p I + tau.
         const SymTensor3 st = (tau[a] - SymTensor3::identity() * p[a]) * (1.0 / (rho[a] * rho[a]));
