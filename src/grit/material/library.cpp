@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <type_traits>
 #include <variant>
 
@@ -22,6 +23,10 @@ struct MetalData {
     double gruneisen_gamma; ///< Gamma0 of eq. (37) [-]
     JohnsonCookStrength strength;
     JohnsonCookFailure failure;
+    /// Tension cut-off [Pa] (> 0; 0: none): the pressure floor -spall_strength, LS-DYNA's PC. J-C damage
+    /// grows with plastic strain only, so without it a particle pulled apart with no deviatoric flow
+    /// carries any tension (docs/theory.md, "Tension cut-off").
+    double spall_strength = 0.0;
 };
 
 /// A ductile solid: Mie-Gruneisen EOS in the metal form of eq. (37) (S2 = S3 = a = 0), Johnson-Cook
@@ -41,6 +46,7 @@ Material make_metal(const MetalData& d) {
     m.solid.taylor_quinney = 0.9;
     m.solid.adiabatic_heating = false;
     m.solid.room_temperature = d.strength.room_temperature;
+    if (d.spall_strength > 0.0) m.min_pressure = -d.spall_strength;
     return m;
 }
 
@@ -100,10 +106,12 @@ std::vector<Material> make_library() {
     // Ductile solids: Johnson-Cook strength (eq. 33) and failure (eq. 35), Mie-Gruneisen EOS (eq. 37).
     lib.push_back(make_metal({"OFHC_copper",
                               "OFHC copper, first seed paper Table 2 (its ref. 49, Piao et al. 2017; J-C failure "
-                              "constants of Johnson & Cook 1985); c_p = 383 J/(kg K)",
+                              "constants of Johnson & Cook 1985); c_p = 383 J/(kg K); tension cut-off 1.3 GPa, the "
+                              "spall strength of pure copper in plate impact (1.2-1.5 GPa, Kanel 2010, Int. J. Fract. "
+                              "163:173)",
                               8960.0, 46.0e9, 383.0, 3933.0, 1.5, 1.99,
                               {90.0e6, 292.0e6, 0.31, 0.025, 1.09, 1.0, 293.0, 1790.0},
-                              {0.54, 4.89, -3.03, 0.014, 1.12, 1.0, 293.0, 1790.0}}));
+                              {0.54, 4.89, -3.03, 0.014, 1.12, 1.0, 293.0, 1790.0}, 1.3e9}));
     lib.push_back(make_metal({"Al6061_T6",
                               "Aluminium 6061-T6, first seed paper Table 2 (its ref. 18, Takaffoli & Papini 2012); "
                               "c_p = 896 J/(kg K)",
@@ -183,6 +191,7 @@ std::string describe(const Material& m) {
     out += fmt::format("  dynamic_viscosity = {} # [Pa s]\n", m.dynamic_viscosity);
     out += fmt::format("  artificial_viscosity_alpha = {}\n  artificial_viscosity_beta = {}\n",
                        m.artificial_viscosity_alpha, m.artificial_viscosity_beta);
+    if (std::isfinite(m.min_pressure)) out += fmt::format("  min_pressure = {} # [Pa] (pressure floor)\n", m.min_pressure);
     if (m.phase != Phase::solid) return out;
     // The keys a case file's [materials.<name>] section accepts, so a block can be pasted into a case.
     out += fmt::format("  shear_modulus = {} # [Pa]\n", m.solid.shear_modulus);
