@@ -26,11 +26,21 @@ std::string RunEstimate::text() const {
                        steps, particles, outputs, size(snapshot_bytes), wall, rate);
 }
 
-std::string RunEstimate::warning(const io::CaseSpec& spec) const {
-    if (wall_seconds <= 86400.0) return {};
-    return fmt::format("warning: this run may take {:.1f} days (time.end = {} s, numerics.particle_spacing = {} m); "
-                       "Ctrl-C stops it with a checkpoint to continue from",
-                       wall_seconds / 86400.0, spec.end_time, spec.particle_spacing);
+std::vector<std::string> RunEstimate::warnings(const io::CaseSpec& spec, double free_bytes) const {
+    std::vector<std::string> out;
+    if (wall_seconds > 86400.0)
+        out.push_back(
+            fmt::format("warning: this run may take {:.1f} days (time.end = {} s, numerics.particle_spacing "
+                        "= {} m); Ctrl-C stops it with a checkpoint to continue from",
+                        wall_seconds / 86400.0, spec.end_time, spec.particle_spacing));
+    // Found out only when the disk is full, hours in, and the run stops there.
+    if (free_bytes >= 0.0 && snapshot_bytes > free_bytes)
+        out.push_back(
+            fmt::format("warning: the snapshots may need {:.3g} GB, {:.3g} GB are free where they are "
+                        "written ({:.0f} outputs at output.interval = {} s); raise output.interval, or set "
+                        "output.snapshots = false",
+                        snapshot_bytes / 1e9, free_bytes / 1e9, outputs, spec.output_interval));
+    return out;
 }
 
 template <int Dim>

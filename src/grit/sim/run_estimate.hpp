@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "grit/io/case_spec.hpp"
 #include "grit/sim/state.hpp"
@@ -19,8 +20,9 @@ struct RunEstimate {
     double rate = 0.0;             ///< the assumed particle-steps per second (threads x per-thread rate)
     /// One line: "~N steps, ~P particles, O outputs (~S of snapshots), ~T wall at R particle-steps/s".
     std::string text() const;
-    /// A warning when the run may take more than a day, else empty.
-    std::string warning(const io::CaseSpec& spec) const;
+    /// Warnings, one line each: the run may take more than a day; its snapshots may need more than
+    /// `free_bytes`, the space left where they are written (negative: unknown, not checked).
+    std::vector<std::string> warnings(const io::CaseSpec& spec, double free_bytes) const;
 };
 
 /// The estimate from the primed `state` of a run of `spec` (its clock holds the first stable step).

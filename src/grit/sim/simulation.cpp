@@ -690,7 +690,11 @@ RunSummary Simulation<Dim>::run() {
         const RunEstimate plan = estimate();
         if (!options_.quiet) fmt::print(stderr, "estimate: {}\n", plan.text());
         if (log) log->info("estimate: " + plan.text());
-        if (const std::string warning = plan.warning(spec_); !warning.empty()) {
+        std::error_code no_space;
+        const double free_bytes =
+            options_.write_files ? static_cast<double>(std::filesystem::space(options_.output_dir, no_space).available)
+                                 : -1.0;
+        for (const std::string& warning : plan.warnings(spec_, no_space ? -1.0 : free_bytes)) {
             if (!options_.quiet) fmt::print(stderr, "{}\n", warning);
             if (log) log->warn(warning);
         }
