@@ -31,7 +31,8 @@ constexpr int exit_input_error = 2;
 constexpr int exit_blow_up = 3;
 
 int run_command(const std::string& case_file, const std::vector<std::string>& sets, const std::string& out,
-                double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart) {
+                double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart,
+                long dump_from) {
     // A restart applies the checkpointed run's --set first (a sweep's parameter, a changed grain size), so
     // that it continues the same physics; its own --set come after and win.
     std::vector<std::string> overrides;
@@ -48,6 +49,7 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     grit::sim::RunOptions options;
     options.output_dir = out.empty() ? std::filesystem::path("output") / spec.name : std::filesystem::path(out);
     options.quiet = quiet;
+    options.dump_from_step = dump_from;
     if (!restart.empty()) {
         // A restart continues the files of the run the checkpoint belongs to (its folder holds checkpoints/).
         options.restart = restart;
@@ -151,6 +153,7 @@ int main(int argc, char** argv) {
     std::string threads_text;
     bool quiet = false;
     std::string restart;
+    long dump_from = 0;
 
     auto* run = app.add_subcommand("run", "run a case");
     run->add_option("case", case_file, "case file (TOML)")->required();
@@ -162,6 +165,11 @@ int main(int argc, char** argv) {
     run->add_option("--restart", restart,
                     "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file; "
                     "the run's own --set apply again, before these");
+    auto* dump_opt = run->add_option("--dump-from", dump_from,
+                                     "write the SPH particles after every step from this step on "
+                                     "(dump/<case>_step_<N>.vtu): to see how a blow-up starts, restart from a "
+                                     "checkpoint before it")
+                         ->type_name("STEP");
 
     auto* sweep = app.add_subcommand("sweep", "run a case over the product of parameter lists (sweep.csv)");
     std::vector<std::string> params;
@@ -198,8 +206,11 @@ int main(int argc, char** argv) {
         if (run->parsed()) {
             if (end_opt->count() && end_time < 0.0)
                 throw grit::core::InputError(fmt::format("--end-time {}: must not be negative [s]", end_time));
+            if (dump_opt->count() && dump_from < 1)
+                throw grit::core::InputError(fmt::format("--dump-from {}: must be a step number, 1 or more", dump_from));
             const int threads = threads_opt->count() ? parse_threads(threads_text) : 0;
-            return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart);
+            return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart,
+                               dump_from);
         }
         if (sweep->parsed()) {
             grit::app::SweepOptions o;

@@ -486,6 +486,14 @@ void Simulation<Dim>::write_output() {
 }
 
 template <int Dim>
+void Simulation<Dim>::write_dump() {
+    if (!options_.write_files || !has_sph_) return;
+    const auto file = options_.output_dir / "dump" / fmt::format("{}_step_{:09}.vtu", spec_.name, state_.clock.step);
+    std::filesystem::create_directories(file.parent_path());
+    io::write_vtu(file, named_snapshot(state_.particles, spec_));
+}
+
+template <int Dim>
 void Simulation<Dim>::save_checkpoint(const std::filesystem::path& file) {
     namespace fs = std::filesystem;
     const fs::path temporary = file.parent_path() / ("." + file.filename().string() + ".tmp");
@@ -708,6 +716,7 @@ RunSummary Simulation<Dim>::run() {
             const double target = std::min(end, next_output_);
             if (c.time + c.dt > target) c.dt = target - c.time;  // land exactly on the output time
             step();
+            if (options_.dump_from_step > 0 && c.step >= options_.dump_from_step) write_dump();
             show_progress(false);
             if (c.time >= target * (1.0 - 1e-12)) {
                 write_output();

@@ -32,6 +32,9 @@ struct RunOptions {
     /// Continue from this checkpoint file, or from the latest checkpoint in this run folder; empty: a
     /// fresh run.
     std::filesystem::path restart;
+    /// From this step on (> 0), the SPH particles are written after every step to
+    /// dump/<case>_step_<N>.vtu: what starts a blow-up, which happens between two outputs.
+    long dump_from_step = 0;
 };
 
 /// What a finished run reports (also written to summary.json).
@@ -133,6 +136,8 @@ private:
     void compute_time_step();
     void open_output(bool restart);
     void write_output();
+    /// The SPH particles of this step to dump/<case>_step_<N>.vtu (RunOptions::dump_from_step).
+    void write_dump();
     void write_checkpoint();
     void write_summary(const RunSummary& summary, const std::string& message) const;
     RunSummary summarize(double wall_time, const std::string& status) const;
