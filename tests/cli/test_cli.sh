@@ -687,6 +687,41 @@ else
     skip "plot" "no python3 with matplotlib and numpy"
 fi
 
+# --- eroded.csv: every removed solid particle, summing to the eroded mass; --dump-from -------------------
+grit run "$AWJ" --out "$W/eroded" --set time.end=6e-6 --set output.snapshots=false --threads 1 --quiet
+if [[ -n $JSON_PY ]] && [[ $RC -eq 0 ]] && why=$("$JSON_PY" - "$W/eroded" <<'PYEOF'
+import csv, json, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/eroded.csv")))
+header = open(d + "/eroded.csv").readline().strip()
+eroded = json.load(open(d + "/summary.json"))["eroded_mass"]
+total = sum(float(r["mass"]) for r in rows)
+ok = (header.startswith("time,id,material,cause,x,y,mass,plastic_strain,damage,pressure,von_mises,triaxiality")
+      and len(rows) > 0 and abs(total - eroded) <= 1e-9 * eroded
+      and all(r["cause"] == "failed" and float(r["damage"]) >= 1.0 and r["material"] == "Al6061_T6" for r in rows))
+print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}")
+sys.exit(0 if ok else 1)
+PYEOF
+); then
+    pass "eroded.csv: one row per removed particle, failed at D = 1, summing to eroded_mass ($why)"
+else
+    fail "eroded.csv: one row per removed particle, summing to eroded_mass" "exit $RC; ${why:-}; $(head -n 3 "$W/eroded/eroded.csv" 2>&1)"
+fi
+grit run "$HYDRO" --out "$W/dump" --set time.end=2e-3 --set output.snapshots=false --dump-from 3 --quiet
+steps=$(grep -o '"steps": *[0-9]*' "$W/dump/summary.json" 2>/dev/null | grep -o '[0-9]*$' || echo 0)
+dumps=$(find "$W/dump/dump" -name 'hydrostatic_2d_step_*.vtu' 2>/dev/null | wc -l)
+if [[ $RC -eq 0 && $steps -ge 3 && $dumps -eq $((steps - 2)) && -s "$W/dump/dump/hydrostatic_2d_step_000000003.vtu" ]]; then
+    pass "--dump-from 3: the particles of every step from step 3 on ($dumps of $steps steps)"
+else
+    fail "--dump-from 3: the particles of every step from step 3 on" "exit $RC, $dumps files, $steps steps: $(cat "$W/stderr")"
+fi
+grit run "$HYDRO" --out "$W/dump0" --dump-from 0
+if [[ $RC -eq 2 ]] && grep -q -- "--dump-from 0" "$W/stderr"; then
+    pass "--dump-from 0 is refused: $(cat "$W/stderr")"
+else
+    fail "--dump-from 0 is refused" "exit $RC: $(cat "$W/stderr")"
+fi
+
 # --- summary --------------------------------------------------------------------------------------------
 
 echo "$passed passed, $failed failed"

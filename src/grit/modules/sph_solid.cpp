@@ -2,6 +2,8 @@
 #include "grit/modules/sph_solid.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "grit/core/disjoint_sets.hpp"
@@ -125,6 +127,8 @@ void SolidModule<Dim>::update_stress() {
     const material::Spin* spin = workspace_.spin.data();
     const double* de = workspace_.energy_rate.data();
     const double dt = state_.clock.dt;
+    failure_von_mises_.assign(static_cast<std::size_t>(ps.size()), std::numeric_limits<double>::quiet_NaN());
+    double* failure_vm = failure_von_mises_.data();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const auto& materials = setup_.spec.materials;
     for (std::size_t m = 0; m < materials.size(); ++m) {
@@ -136,7 +140,9 @@ void SolidModule<Dim>::update_stress() {
                 parallel::for_each(ps.size(), [&](Index i) {
                     if (ph[i] != solid || mat[i] != id) return;
                     material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
+                    const double damage_before = damage[i], vm_before = vm[i];
                     s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt);
+                    if (s.damage >= 1.0 && damage_before < 1.0) failure_vm[i] = vm_before;
                     tau[i] = s.deviatoric_stress;
                     eps_p[i] = s.plastic_strain;
                     damage[i] = s.damage;
@@ -213,13 +219,39 @@ void SolidModule<Dim>::remove_failed() {
     const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
     if (failed == 0) return;
     const double* m = ps.mass();
+    const auto& f = ps.fields();
+    const double* eps_p = f.template get<double>("plastic_strain").data();
+    const double* vm = f.template get<double>("von_mises").data();
+    const double* temperature = f.template get<double>("temperature").data();
+    const double* p = ps.pressure();
+    const auto* v = ps.velocity();
+    const std::int32_t* id = ps.id();
     std::vector<Index> keep;
     keep.reserve(static_cast<std::size_t>(n - failed));
     for (Index i = 0; i < n; ++i) {
-        if (gone[static_cast<std::size_t>(i)])
-            state_.ledger.eroded += m[i];
-        else
+        const auto g = static_cast<std::size_t>(i);
+        if (!gone[g]) {
             keep.push_back(i);
+            continue;
+        }
+        state_.ledger.eroded += m[i];
+        analysis::ErosionRecord r;
+        r.time = state_.clock.time;
+        r.id = id[i];
+        r.material = mat[i];
+        const bool brittle = brittle_[static_cast<std::size_t>(mat[i])];
+        r.cause = !brittle ? "failed" : rho[i] < rubble_density_[static_cast<std::size_t>(mat[i])] ? "rubble" : "fragment";
+        for (int d = 0; d < Dim; ++d) r.position[static_cast<std::size_t>(d)] = x[i][d];
+        r.mass = m[i];
+        r.plastic_strain = eps_p[i];
+        r.damage = damage[i];
+        r.pressure = p[i];
+        r.von_mises = brittle || std::isnan(failure_von_mises_[g]) ? vm[i] : failure_von_mises_[g];
+        r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
+        r.temperature = temperature[i];
+        r.density = rho[i];
+        r.speed = core::norm(v[i]);
+        erosion_log_.add(r);
     }
     ps.remove(keep);
 }
@@ -238,6 +270,33 @@ void SolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded));
     out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps));
     out.push_back(sim::OutputValue::real("internal_energy", internal));  // sum of m e over solids [J]
+}
+
+template <int Dim>
+void SolidModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
+    std::vector<std::string> names;
+    for (const auto& m : setup_.spec.materials) names.push_back(m.name);
+    erosion_log_.open(place.dir / "eroded.csv", Dim, std::move(names),
+                      restart ? static_cast<long>(erosion_log_.total()) : -1);
+}
+
+template <int Dim>
+void SolidModule<Dim>::write_output(const sim::OutputPlace& /*place*/) {
+    erosion_log_.flush();
+}
+
+template <int Dim>
+void SolidModule<Dim>::save(io::Hdf5Group& group) {
+    erosion_log_.flush();
+    group.write("eroded_particles", static_cast<std::int64_t>(erosion_log_.total()));
+}
+
+template <int Dim>
+void SolidModule<Dim>::load(const io::Hdf5Group& group) {
+    // A checkpoint from before the erosion log has no count: its eroded.csv, if any, is started again.
+    erosion_log_.restore(group.has_attribute("eroded_particles")
+                             ? static_cast<std::size_t>(group.read_int("eroded_particles"))
+                             : 0);
 }
 
 template class SolidModule<2>;

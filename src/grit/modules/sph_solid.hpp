@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "grit/analysis/erosion_log.hpp"
 #include "grit/modules/sph_fluid.hpp"
 #include "grit/sph/solid_rates.hpp"
 
@@ -21,6 +22,11 @@ public:
     void initialise() override;
     void install(sim::Pipeline& pipeline) override;
     void output_values(std::vector<sim::OutputValue>& out) const override;
+    /// eroded.csv: every removed solid particle (analysis/erosion_log.hpp).
+    void open_output(const sim::OutputPlace& place, bool restart) override;
+    void write_output(const sim::OutputPlace& place) override;
+    void save(io::Hdf5Group& group) override;
+    void load(const io::Hdf5Group& group) override;
 
 private:
     void update_pressure();
@@ -35,6 +41,9 @@ private:
     std::uint64_t workspace_generation_ = 0;
     std::vector<bool> brittle_;  ///< per material: a JH-2 solid (fractured particles stay until detached)
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
+    /// Per particle, this step: the von Mises stress before a ductile particle failed (its failure zeroes it).
+    std::vector<double> failure_von_mises_;
+    analysis::ErosionLog erosion_log_;
 };
 
 extern template class SolidModule<2>;

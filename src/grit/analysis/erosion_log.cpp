@@ -1,0 +1,45 @@
+// Erosion log: records, eroded.csv.
+#include "grit/analysis/erosion_log.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "grit/io/csv_file.hpp"
+
+namespace grit::analysis {
+
+void ErosionLog::open(const std::filesystem::path& file, int dimension, std::vector<std::string> material_names,
+                      long rows) {
+    dimension_ = dimension;
+    material_names_ = std::move(material_names);
+    // A restart keeps the rows its checkpoint had seen; one from a checkpoint older than the log (no rows,
+    // no file) starts the file.
+    if (rows > 0 || (rows == 0 && std::filesystem::exists(file))) {
+        io::keep_csv_rows(file, rows);
+        file_.open(file, std::ios::app);
+    } else {
+        file_.open(file);
+        file_ << (dimension_ == 3 ? "time,id,material,cause,x,y,z," : "time,id,material,cause,x,y,")
+              << "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density,speed\n";
+    }
+    if (!file_) throw std::runtime_error("cannot open '" + file.string() + "' for writing");
+    written_ = records_.size();
+}
+
+void ErosionLog::flush() {
+    if (!file_.is_open()) return;
+    for (; written_ < records_.size(); ++written_) {
+        const auto& r = records_[written_];
+        const auto m = static_cast<std::size_t>(r.material);
+        file_ << fmt::format("{:.9g},{},{},{},", r.time, r.id,
+                             m < material_names_.size() ? material_names_[m] : std::to_string(r.material), r.cause);
+        for (int d = 0; d < dimension_; ++d) file_ << fmt::format("{:.9g},", r.position[static_cast<std::size_t>(d)]);
+        file_ << fmt::format("{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.mass,
+                             r.plastic_strain, r.damage, r.pressure, r.von_mises, r.triaxiality, r.temperature,
+                             r.density, r.speed);
+    }
+    file_.flush();
+}
+
+}  // namespace grit::analysis

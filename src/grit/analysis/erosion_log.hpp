@@ -1,0 +1,62 @@
+// The erosion log: each solid particle the erosion stage removes, with the state it failed in, so that
+// where, when and why a specimen loses mass can be read after the run (eroded.csv). The eroded mass of
+// series.csv is the sum of its `mass` column.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace grit::analysis {
+
+/// One removed solid particle. `cause`: "failed" (a ductile particle at D >= 1, eq. 36), "fragment" (fractured
+/// rock with no intact rock attached) or "rubble" (fractured rock dilated past the rubble density).
+struct ErosionRecord {
+    double time = 0.0;  ///< end of the step that removed it [s]
+    std::int32_t id = -1;
+    std::int32_t material = 0;
+    const char* cause = "";
+    std::array<double, 3> position{};  ///< [m]
+    double mass = 0.0;                 ///< [kg] (per metre of thickness in 2D)
+    double plastic_strain = 0.0;
+    double damage = 0.0;
+    double pressure = 0.0;     ///< [Pa], positive in compression
+    double von_mises = 0.0;    ///< [Pa]: of the step before a ductile failure (failure zeroes the stress)
+    double triaxiality = 0.0;  ///< -p / sigma_vm of eq. (35), from the two above; NaN without shear
+    double temperature = 0.0;  ///< [K]
+    double density = 0.0;      ///< [kg/m^3]
+    double speed = 0.0;        ///< [m/s]
+};
+
+class ErosionLog {
+public:
+    void add(const ErosionRecord& r) { records_.push_back(r); }
+    /// Every removal of the run, restarts included.
+    std::size_t total() const noexcept { return earlier_ + records_.size(); }
+
+    /// Creates eroded.csv with its header (coordinates x, y in 2D; x, y, z in 3D), or, on a restart
+    /// (`rows` >= 0), keeps the header and the first `rows` records and appends after them.
+    void open(const std::filesystem::path& file, int dimension, std::vector<std::string> material_names,
+              long rows = -1);
+    /// Appends the records not yet written.
+    void flush();
+    /// After a checkpoint load: the removals before it (all in the file).
+    void restore(std::size_t earlier) {
+        records_.clear();
+        written_ = 0;
+        earlier_ = earlier;
+    }
+
+private:
+    std::vector<ErosionRecord> records_;
+    std::size_t written_ = 0;
+    std::size_t earlier_ = 0;
+    int dimension_ = 2;
+    std::vector<std::string> material_names_;
+    std::ofstream file_;
+};
+
+}  // namespace grit::analysis
