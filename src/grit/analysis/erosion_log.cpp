@@ -21,7 +21,7 @@ void ErosionLog::open(const std::filesystem::path& file, int dimension, std::vec
     } else {
         file_.open(file);
         file_ << (dimension_ == 3 ? "time,id,material,cause,x,y,z," : "time,id,material,cause,x,y,")
-              << "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density,speed\n";
+              << "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density,density_ratio,speed\n";
     }
     if (!file_) throw std::runtime_error("cannot open '" + file.string() + "' for writing");
     written_ = records_.size();
@@ -35,9 +35,9 @@ void ErosionLog::flush() {
         file_ << fmt::format("{:.9g},{},{},{},", r.time, r.id,
                              m < material_names_.size() ? material_names_[m] : std::to_string(r.material), r.cause);
         for (int d = 0; d < dimension_; ++d) file_ << fmt::format("{:.9g},", r.position[static_cast<std::size_t>(d)]);
-        file_ << fmt::format("{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.mass,
+        file_ << fmt::format("{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.mass,
                              r.plastic_strain, r.damage, r.pressure, r.von_mises, r.triaxiality, r.temperature,
-                             r.density, r.speed);
+                             r.density, r.density_ratio, r.speed);
     }
     file_.flush();
 }

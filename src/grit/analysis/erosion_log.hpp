@@ -28,6 +28,7 @@ struct ErosionRecord {
     double triaxiality = 0.0;  ///< -p / sigma_vm of eq. (35), from the two above; NaN without shear
     double temperature = 0.0;  ///< [K]
     double density = 0.0;      ///< [kg/m^3]
+    double density_ratio = 0.0;  ///< rho / rho0: below 1 the particle has dilated (tension, voids)
     double speed = 0.0;        ///< [m/s]
 };
 

@@ -250,6 +250,7 @@ void SolidModule<Dim>::remove_failed() {
         r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
         r.temperature = temperature[i];
         r.density = rho[i];
+        r.density_ratio = rho[i] / setup_.spec.materials[static_cast<std::size_t>(mat[i])].reference_density();
         r.speed = core::norm(v[i]);
         erosion_log_.add(r);
     }

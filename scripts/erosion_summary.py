@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""How a specimen lost its mass, from a run's eroded.csv (one row per removed solid particle): the
+removals by cause and by time window, and the state the particles failed in (median and range of the
+plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface).
+
+  python3 scripts/erosion_summary.py output/awj_copper_2d [--bins 4] [--surface 0.0]
+
+--surface: the specimen's initial top (y in 2D, z in 3D) for the depth column; 0 by default, as in the
+AWJ cases. Uses the standard library only.
+"""
+import argparse
+import csv
+import math
+import pathlib
+import statistics
+import sys
+
+
+def quantiles(values):
+    """(min, median, max) of the finite values, or None."""
+    finite = sorted(v for v in values if math.isfinite(v))
+    if not finite:
+        return None
+    return finite[0], statistics.median(finite), finite[-1]
+
+
+def describe(rows):
+    lines = []
+    columns = [("plastic strain", lambda r: float(r["plastic_strain"]), "{:.3g}"),
+               ("triaxiality -p/s_vm", lambda r: float(r["triaxiality"]), "{:.3g}"),
+               ("pressure [MPa]", lambda r: float(r["pressure"]) / 1e6, "{:.4g}"),
+               ("rho/rho0 - 1 [%]", lambda r: 100.0 * (float(r["density_ratio"]) - 1.0), "{:.3g}"),
+               ("depth [mm]", lambda r: 1e3 * r["_depth"], "{:.3g}"),
+               ("speed [m/s]", lambda r: float(r["speed"]), "{:.3g}")]
+    for name, get, fmt in columns:
+        q = quantiles([get(r) for r in rows])
+        if q:
+            lines.append(f"  {name:22s} median {fmt.format(q[1]):>9s}   range {fmt.format(q[0])} .. {fmt.format(q[2])}")
+    tension = sum(1 for r in rows if math.isfinite(float(r["triaxiality"])) and float(r["triaxiality"]) > 1.0 / 3.0)
+    lines.append(f"  failed in more tension than uniaxial (triaxiality > 1/3): {tension} of {len(rows)}")
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("run", help="a run's output folder (holding eroded.csv)")
+    parser.add_argument("--bins", type=int, default=4, help="time windows to count the removals in")
+    parser.add_argument("--surface", type=float, default=0.0, help="the specimen's initial top [m]")
+    args = parser.parse_args()
+    path = pathlib.Path(args.run) / "eroded.csv"
+    if not path.is_file():
+        sys.exit(f"erosion_summary: {path}: no such file (a run with solids writes it)")
+    with path.open() as f:
+        rows = list(csv.DictReader(f))
+    up = "z" if rows and "z" in rows[0] else "y"
+    for r in rows:
+        r["_depth"] = args.surface - float(r[up])
+    mass = sum(float(r["mass"]) for r in rows)
+    print(f"{path}: {len(rows)} particles removed, {mass:.4g} kg{' per metre' if up == 'y' else ''}")
+    if not rows:
+        return
+    for cause in sorted({r["cause"] for r in rows}):
+        part = [r for r in rows if r["cause"] == cause]
+        print(f"cause {cause}: {len(part)} particles, {sum(float(r['mass']) for r in part):.4g} kg")
+        print("\n".join(describe(part)))
+    times = [float(r["time"]) for r in rows]
+    end = max(times)
+    width = end / max(args.bins, 1)
+    print("removals by time window:")
+    for k in range(max(args.bins, 1)):
+        lo, hi = k * width, (k + 1) * width
+        part = [r for r in rows if lo < float(r["time"]) <= hi or (k == 0 and float(r["time"]) == 0.0)]
+        print(f"  {lo * 1e3:8.4f} - {hi * 1e3:8.4f} ms: {len(part):5d} particles, "
+              f"{sum(float(r['mass']) for r in part):.4g} kg")
+
+
+if __name__ == "__main__":
+    main()
