@@ -3,8 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
-
 #include "grit/io/csv_file.hpp"
 
 namespace grit::analysis {
@@ -15,15 +13,11 @@ void ErosionLog::open(const std::filesystem::path& file, int dimension, std::vec
     material_names_ = std::move(material_names);
     // A restart keeps the rows its checkpoint had seen; one from a checkpoint older than the log (no rows,
     // no file) starts the file.
-    if (rows > 0 || (rows == 0 && std::filesystem::exists(file))) {
-        io::keep_csv_rows(file, rows);
-        file_.open(file, std::ios::app);
-    } else {
-        file_.open(file);
-        file_ << (dimension_ == 3 ? "time,id,material,cause,x,y,z," : "time,id,material,cause,x,y,")
-              << "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density,density_ratio,speed\n";
-    }
-    if (!file_) throw std::runtime_error("cannot open '" + file.string() + "' for writing");
+    const bool resume = rows > 0 || (rows == 0 && std::filesystem::exists(file));
+    const std::string header = std::string("time,id,material,cause,") + (dimension_ == 3 ? "x,y,z," : "x,y,") +
+                               "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density," +
+                               "density_ratio,speed";
+    io::open_csv_log(file_, file, header, resume ? rows : -1);
     written_ = records_.size();
 }
 

@@ -65,7 +65,10 @@ SeriesWriter::SeriesWriter(std::filesystem::path file, std::vector<std::string> 
         std::getline(in, header);
     }
     std::string expected;
-    for (std::size_t i = 0; i < columns_.size(); ++i) expected += (i > 0 ? "," : "") + csv_field(columns_[i]);
+    for (std::size_t i = 0; i < columns_.size(); ++i) {
+        if (i > 0) expected += ',';  // appended, not ("," + field): GCC 12 warns -Wrestrict on the temporary
+        expected += csv_field(columns_[i]);
+    }
     if (header != expected)
         throw std::runtime_error(fmt::format("'{}' has other columns than this run writes; cannot continue it",
                                              file_.string()));

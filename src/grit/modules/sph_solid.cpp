@@ -239,8 +239,9 @@ void SolidModule<Dim>::remove_failed() {
         r.time = state_.clock.time;
         r.id = id[i];
         r.material = mat[i];
-        const bool brittle = brittle_[static_cast<std::size_t>(mat[i])];
-        r.cause = !brittle ? "failed" : rho[i] < rubble_density_[static_cast<std::size_t>(mat[i])] ? "rubble" : "fragment";
+        const auto k = static_cast<std::size_t>(mat[i]);
+        const bool brittle = brittle_[k];
+        r.cause = !brittle ? "failed" : rho[i] < rubble_density_[k] ? "rubble" : "fragment";
         for (int d = 0; d < Dim; ++d) r.position[static_cast<std::size_t>(d)] = x[i][d];
         r.mass = m[i];
         r.plastic_strain = eps_p[i];
@@ -250,7 +251,7 @@ void SolidModule<Dim>::remove_failed() {
         r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
         r.temperature = temperature[i];
         r.density = rho[i];
-        r.density_ratio = rho[i] / setup_.spec.materials[static_cast<std::size_t>(mat[i])].reference_density();
+        r.density_ratio = rho[i] / setup_.spec.materials[k].reference_density();
         r.speed = core::norm(v[i]);
         erosion_log_.add(r);
     }

@@ -8,14 +8,7 @@
 namespace grit::wear {
 
 void ImpactLog::open(const std::filesystem::path& file, long rows) {
-    if (rows >= 0) {
-        io::keep_csv_rows(file, rows);
-        file_.open(file, std::ios::app);
-    } else {
-        file_.open(file);
-        file_ << "time,grain,target,speed,angle\n";
-    }
-    if (!file_) throw std::runtime_error("cannot open '" + file.string() + "' for writing");
+    io::open_csv_log(file_, file, "time,grain,target,speed,angle", rows);
     written_ = records_.size();
 }
 
