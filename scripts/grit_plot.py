@@ -4,7 +4,8 @@
 A run folder: a picture of the last output (2D: water, solids coloured by plastic strain, grains to
 scale), the crater profile at several output times on one axis (2D cases with a crater analysis; from
 the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
-and histograms of the impact speeds and angles (impacts.csv). A sweep folder (sweep.csv): C_d, C_w and
+histograms of the impact speeds and angles (impacts.csv), and where the removed solid particles were and
+the state they failed in (eroded.csv). A sweep folder (sweep.csv): C_d, C_w and
 eroded mass against each swept parameter.
 
 usage: scripts/grit_plot.py FOLDER [--profiles N]
@@ -165,9 +166,48 @@ def run_plots(folder, plots, profiles):
             axes[1].hist(data["angle"], bins=18, range=(0, 90))
             axes[1].set_xlabel("impact angle [deg] (90: normal)")
             save(fig, plots / "impacts.png")
+    erosion_picture(folder, summary, plots)
     if summary:
         snapshot_picture(folder, summary, plots)
         crater_profiles(folder, summary, plots, profiles)
+
+
+def erosion_picture(folder, summary, plots):
+    """eroded.csv: where the removed solid particles were (coloured by the time they went) and the
+    state they failed in (plastic strain against triaxiality -p/sigma_vm, by cause)."""
+    path = folder / "eroded.csv"
+    if not path.exists():
+        return
+    try:
+        data = read_csv(path)
+    except ValueError as e:  # rows of another grit version appended by a restart
+        print(f"warning: {path} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
+        return
+    if data.size == 0 or "cause" not in (data.dtype.names or ()):
+        return
+    up = "z" if "z" in data.dtype.names else "y"
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.8))
+    dots = axes[0].scatter(data["x"] * 1e3, data[up] * 1e3, c=data["time"] * 1e6, s=8, cmap="viridis")
+    fig.colorbar(dots, ax=axes[0], label="removed at [us]")
+    axes[0].set_xlabel("x [mm]")
+    axes[0].set_ylabel(f"{up} [mm]")
+    axes[0].set_aspect("equal", adjustable="datalim")
+    axes[0].set_title(f"{data.size} particles removed", fontsize=9)
+    ductile = data["cause"] == "failed"
+    if ductile.any():  # metals: the stress state of failure, eq. (35)
+        axes[1].scatter(data["triaxiality"][ductile], data["plastic_strain"][ductile], s=8, label="failed (D = 1)")
+        axes[1].axvline(1.0 / 3.0, color="0.6", lw=0.8, ls="--")
+        axes[1].set_xlabel("triaxiality -p/sigma_vm at failure (1/3: uniaxial tension)")
+        axes[1].set_ylabel("plastic strain")
+    else:  # rock: fractured particles go as fragments or as dilated rubble; how deep, how dilated
+        for cause in sorted(set(data["cause"])):
+            sel = data["cause"] == cause
+            axes[1].scatter(-data[up][sel] * 1e3, data["density_ratio"][sel], s=8, label=cause)
+        axes[1].set_xlabel(f"depth below {up} = 0 [mm]")
+        axes[1].set_ylabel("rho / rho0 when removed")
+    axes[1].legend(fontsize=7)
+    axes[1].grid(True, alpha=0.3)
+    save(fig, plots / "erosion.png")
 
 
 def sweep_plots(folder, plots):

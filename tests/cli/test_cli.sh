@@ -678,8 +678,8 @@ if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1
     grit run "$AWJ" --out "$W/awjrun" --set time.end=8e-6 --quiet
     grit plot "$W/awjrun"
     if [[ $RC -eq 0 && -s "$W/awjrun/plots/crater_size.png" && -s "$W/awjrun/plots/crater_profile.png" &&
-        -s "$W/awjrun/plots/impacts.png" ]]; then
-        pass "plot: a run folder gives the crater profile and size, eroded mass and impact histograms"
+        -s "$W/awjrun/plots/impacts.png" && -s "$W/awjrun/plots/erosion.png" ]]; then
+        pass "plot: a run folder gives the crater profile and size, eroded mass, impact histograms and erosion map"
     else
         fail "plot: a run folder" "exit $RC: $(cat "$W/stderr") $(ls "$W/awjrun/plots" 2>&1)"
     fi

@@ -247,7 +247,8 @@ void SolidModule<Dim>::remove_failed() {
         r.plastic_strain = eps_p[i];
         r.damage = damage[i];
         r.pressure = p[i];
-        r.von_mises = brittle || std::isnan(failure_von_mises_[g]) ? vm[i] : failure_von_mises_[g];
+        const double vm_before = g < failure_von_mises_.size() ? failure_von_mises_[g] : vm[i];
+        r.von_mises = brittle || std::isnan(vm_before) ? vm[i] : vm_before;
         r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
         r.temperature = temperature[i];
         r.density = rho[i];
