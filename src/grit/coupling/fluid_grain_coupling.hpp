@@ -74,6 +74,8 @@ public:
     double stable_time_step() const noexcept { return stable_dt_; }
 
     std::size_t pair_count() const noexcept { return pairs_.pair_count(); }
+    /// How often the candidate pairs (R_c,i plus the skin) were searched for on the grid.
+    long candidate_builds() const noexcept { return candidate_builds_; }
     const GrainCouplingState<Dim>& grain_state() const noexcept { return grain_; }
     const CouplingParameters& parameters() const noexcept { return parameters_; }
 
@@ -81,6 +83,18 @@ private:
     CouplingParameters parameters_;
     sph::Kernel<Dim> kernel_type_{sph::CubicSpline<Dim>(1.0)};
     neighbors::PeriodicBox<Dim> box_;
+    /// Whether the candidates no longer hold every pair: the particle set or the grains changed, or the
+    /// particles and grains moved, between them, as far as the skin since the candidates were found.
+    bool candidates_stale(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles) const;
+
+    // The pairs within R_c,i + skin, searched for on a cell grid only when they go stale; each step's pairs
+    // are refined from them by the same distance test, so they are those a fresh search would give.
+    neighbors::CrossPairList<Dim> candidates_;
+    double skin_ = 0.0;
+    std::uint64_t candidate_generation_ = ~std::uint64_t{0};  // the particle set's, at the search
+    std::vector<Vec> particle_at_search_, grain_at_search_;
+    std::vector<std::int32_t> grain_ids_at_search_;
+    long candidate_builds_ = 0;
     neighbors::CrossPairList<Dim> pairs_;        // grains near each fluid particle (rows by particle)
     std::vector<double> weight_;                 // W_ai, in the order of pairs_
     std::vector<double> reach_;                  // R_c,i per grain

@@ -40,6 +40,18 @@ public:
             build_with(xa, na, keep, xb, radius, nb, reach, box, OpenImage<Dim>{});
     }
 
+    /// The pairs of `wider` (a list built with a larger reach) that are closer than radius[b] + reach,
+    /// by the test build() applies: the list build() would give at these positions, wherever the wider
+    /// list's pairs still hold every such pair (points and bodies have moved less than its extra reach
+    /// together). Rows keep their ascending b.
+    void refine(const CrossPairList& wider, const Vec* xa, const Vec* xb, const double* radius, double reach,
+                const PeriodicBox<Dim>& box = {}) {
+        if (box.any())
+            refine_with(wider, xa, xb, radius, reach, PeriodicImage<Dim>(box));
+        else
+            refine_with(wider, xa, xb, radius, reach, OpenImage<Dim>{});
+    }
+
     /// The bodies of point a: indices()[begin(a) .. end(a)).
     Index begin(Index a) const noexcept { return offsets_[static_cast<std::size_t>(a)]; }
     Index end(Index a) const noexcept { return offsets_[static_cast<std::size_t>(a) + 1]; }
@@ -89,24 +101,55 @@ private:
             });
         };
 
-        parallel::for_each(na, [&](Index a) {
-            if (!candidate(a)) return;
-            Index count = 0;
-            scan(a, [&](Index) { ++count; });
-            offsets_[static_cast<std::size_t>(a) + 1] = count;
-        });
+        fill_rows(
+            na,
+            [&](Index a) {
+                Index count = 0;
+                if (candidate(a)) scan(a, [&](Index) { ++count; });
+                return count;
+            },
+            [&](Index a, Index* row) {
+                Index* out = row;
+                scan(a, [&](Index b) { *out++ = b; });
+                std::sort(row, out);
+            });
+    }
+
+    /// Compressed rows in two passes over the points, each parallel and writing only its point's row:
+    /// count(a) gives the length of row a, then fill(a, row) writes it (rows of length 0 are not filled).
+    template <class Count, class Fill>
+    void fill_rows(Index na, Count&& count, Fill&& fill) {
+        parallel::for_each(na, [&](Index a) { offsets_[static_cast<std::size_t>(a) + 1] = count(a); });
         for (Index a = 0; a < na; ++a) offsets_[static_cast<std::size_t>(a) + 1] += offsets_[static_cast<std::size_t>(a)];
         indices_.resize(static_cast<std::size_t>(offsets_.back()));
         if (indices_.empty()) return;
         parallel::for_each(na, [&](Index a) {
-            const auto first = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(a)]);
-            const auto last = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(a) + 1]);
-            if (first == last) return;
-            std::size_t k = first;
-            scan(a, [&](Index b) { indices_[k++] = b; });
-            std::sort(indices_.begin() + static_cast<std::ptrdiff_t>(first),
-                      indices_.begin() + static_cast<std::ptrdiff_t>(last));
+            if (begin(a) < end(a)) fill(a, indices_.data() + begin(a));
         });
+    }
+
+    template <class Image>
+    void refine_with(const CrossPairList& wider, const Vec* xa, const Vec* xb, const double* radius, double reach,
+                     const Image& image) {
+        const Index na = wider.point_count();
+        offsets_.assign(static_cast<std::size_t>(na) + 1, 0);
+        indices_.clear();
+        const Index* from = wider.indices();
+        auto near = [&](Index a, Index b) {
+            const double r = radius[b] + reach;
+            return core::norm2(image(xa[a] - xb[b])) < r * r;
+        };
+        fill_rows(
+            na,
+            [&](Index a) {
+                Index count = 0;
+                for (Index s = wider.begin(a); s < wider.end(a); ++s) count += near(a, from[s]) ? 1 : 0;
+                return count;
+            },
+            [&](Index a, Index* row) {
+                for (Index s = wider.begin(a); s < wider.end(a); ++s)
+                    if (near(a, from[s])) *row++ = from[s];
+            });
     }
 
     std::vector<Index> offsets_{0};

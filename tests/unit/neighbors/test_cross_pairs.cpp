@@ -105,3 +105,37 @@ TEST(CrossPairList, SameListAtOneAndTwoThreads) {
     EXPECT_EQ(std::vector<Index>(one.indices(), one.indices() + one.pair_count()),
               std::vector<Index>(two.indices(), two.indices() + two.pair_count()));
 }
+
+// The fluid-grain coupling keeps a list found with a skin and refines it each step: once points and bodies
+// have moved less than the skin together, the refined list is the list a fresh search gives, row for row.
+TEST(CrossPairList, RefiningAListFoundWithASkinGivesTheFreshList3D) {
+    constexpr Index na = 3000, nb = 300;
+    auto s = random_sets<3>(na, nb, 0.06, 0.12, 6);
+    auto keep = [](Index a) { return a % 4 != 3; };
+    const double skin = 0.02;
+    CrossPairList<3> wider;
+    wider.build(s.a.data(), na, keep, s.b.data(), s.radius.data(), nb, skin);
+    // Each point and each body moves just under skin / 2 in a random direction.
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> g(0.0, 1.0);
+    auto move = [&](auto& points) {
+        for (auto& p : points) {
+            grit::core::Vec<3> d{{g(rng), g(rng), g(rng)}};
+            p += d * (0.499 * skin / grit::core::norm(d));
+        }
+    };
+    move(s.a);
+    move(s.b);
+    CrossPairList<3> fresh, refined;
+    fresh.build(s.a.data(), na, keep, s.b.data(), s.radius.data(), nb, 0.0);
+    refined.refine(wider, s.a.data(), s.b.data(), s.radius.data(), 0.0);
+    ASSERT_EQ(refined.point_count(), na);
+    ASSERT_EQ(refined.pair_count(), fresh.pair_count());
+    EXPECT_GT(fresh.pair_count(), static_cast<std::size_t>(na) / 20);  // not a vacuous test
+    EXPECT_LT(fresh.pair_count(), wider.pair_count());                  // the skin held more
+    for (Index a = 0; a < na; ++a) {
+        const std::vector<Index> want(fresh.indices() + fresh.begin(a), fresh.indices() + fresh.end(a));
+        const std::vector<Index> got(refined.indices() + refined.begin(a), refined.indices() + refined.end(a));
+        ASSERT_EQ(got, want) << "point " << a;
+    }
+}
