@@ -95,7 +95,7 @@ bool FluidGrainCoupling<Dim>::candidates_stale(const dem::GrainSet<Dim>& grains,
     const double moved_grains = parallel::max(ng, 0.0, [&](Index i) {
         return core::norm2(xg[i] - grain_at_search_[static_cast<std::size_t>(i)]);
     });
-    return std::sqrt(moved_particles) + std::sqrt(moved_grains) >= skin_;
+    return std::sqrt(moved_particles) + std::sqrt(moved_grains) >= (1.0 - 1e-9) * skin_;  // margin: rounding
 }
 
 template <int Dim>
