@@ -6,7 +6,7 @@ CTEST_ARGS ?=
 
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test test-sanitize demo bench bench-awj install clean
+.PHONY: all deps configure build test test-long test-sanitize demo bench bench-awj install clean
 
 all: build
 
@@ -21,6 +21,11 @@ build: configure
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j 1 $(CTEST_ARGS)
+
+# The same, with the long forms of the validation tests that CI runs reduced (tests/support/case_fixture.hpp,
+# long_tests(): the cantilever over a whole swing).
+test-long: build
+	GRIT_LONG_TESTS=1 ctest --test-dir $(BUILD) --output-on-failure -j 1 $(CTEST_ARGS)
 
 # Unit tests, and the short whole-case tests (conservation, thread determinism of every case), under
 # AddressSanitizer and UndefinedBehaviorSanitizer.

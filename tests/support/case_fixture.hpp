@@ -1,6 +1,7 @@
 // Helpers for tests that run the cases in cases/ in memory (no files written).
 #pragma once
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,6 +12,13 @@
 #include "grit/sim/simulation.hpp"
 
 namespace grit::testing {
+
+/// Whether the long forms of the validation tests run (GRIT_LONG_TESTS=1, `make test-long`); by default
+/// (`make test`, CI) they run in a reduced form that still checks against the same reference.
+inline bool long_tests() {
+    const char* value = std::getenv("GRIT_LONG_TESTS");
+    return value != nullptr && std::string(value) != "" && std::string(value) != "0";
+}
 
 /// Reads cases/<relative> with overrides (reduced sizes for CI).
 inline io::CaseSpec load_case(const std::string& relative, const std::vector<std::string>& overrides = {}) {

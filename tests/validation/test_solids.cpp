@@ -95,16 +95,20 @@ TEST(Solids, ElasticImpactEnergyBudget) {
     EXPECT_LT(worst, 0.02);
 }
 
-// Cantilever plate of Gray, Monaghan & Swift (2001), first bending mode: the period from the tip's
-// zero crossings (its start at rest height, then the first two crossings after it, T = 2 (t2 - t1))
-// within 5 % of thin-plate theory, T = 0.2540 s (see the case file). The case as shipped: 20 particles
-// through the thickness, h = 1.6 dx, no artificial stress; run to 0.28 s (one period).
+// Cantilever plate of Gray, Monaghan & Swift (2001), first bending mode: the period within 5 % of
+// thin-plate theory, T = 0.2540 s (see the case file). The case as shipped: 20 particles through the
+// thickness, h = 1.6 dx, no artificial stress. The tip starts at its rest height with the mode's
+// velocity, so its zero crossings fall at T/2, T, ...: by default (the reduced form, 0.13 s of the
+// case) T = 2 t1 from the first crossing; with GRIT_LONG_TESTS=1 (`make test-long`) also over a
+// whole swing, T = 2 (t2 - t1), to 0.27 s. Both read +3.5-3.7 % (0.2630 and 0.2634 s).
 TEST(Solids, CantileverPeriodWithinFivePercent) {
+    const bool whole_swing = grit::testing::long_tests();
     grit::sim::Simulation<2> sim(load_case("plate_oscillation_2d/case.toml", {"time.end=0.28"}), in_memory());
     const double rest = 0.01;  // the top surface at rest [m]
+    const std::size_t wanted = whole_swing ? 2 : 1;
     std::vector<double> crossings;
     double t_prev = 0.0, y_prev = 0.0;
-    for (int k = 1; k <= 280; ++k) {
+    for (int k = 1; k <= 280 && crossings.size() < wanted; ++k) {
         const double t = 1e-3 * k;
         sim.advance_to(t);
         const double y = sim.probe("tip_top") - rest;
@@ -112,10 +116,16 @@ TEST(Solids, CantileverPeriodWithinFivePercent) {
         t_prev = t;
         y_prev = y;
     }
-    ASSERT_GE(crossings.size(), 2u);
-    const double period = 2.0 * (crossings[1] - crossings[0]);
     const double theory = 0.2540;
-    std::printf("cantilever: crossings %.4f, %.4f s; period %.4f s vs thin-plate %.4f s (%+.1f %%)\n", crossings[0],
-                crossings[1], period, theory, 100.0 * (period / theory - 1.0));
-    EXPECT_NEAR(period, theory, 0.05 * theory);
+    ASSERT_EQ(crossings.size(), wanted);
+    const double half_swing = 2.0 * crossings[0];
+    std::printf("cantilever: first crossing %.4f s; period 2 t1 = %.4f s vs thin-plate %.4f s (%+.1f %%)\n",
+                crossings[0], half_swing, theory, 100.0 * (half_swing / theory - 1.0));
+    EXPECT_NEAR(half_swing, theory, 0.05 * theory);
+    if (whole_swing) {
+        const double period = 2.0 * (crossings[1] - crossings[0]);
+        std::printf("cantilever: crossings %.4f, %.4f s; period 2 (t2 - t1) = %.4f s (%+.1f %%)\n", crossings[0],
+                    crossings[1], period, 100.0 * (period / theory - 1.0));
+        EXPECT_NEAR(period, theory, 0.05 * theory);
+    }
 }
