@@ -24,15 +24,18 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
     reach_.resize(static_cast<std::size_t>(ng));
     for (Index i = 0; i < ng; ++i) reach_[static_cast<std::size_t>(i)] = parameters_.radius_factor * 2.0 * radius[i];
     const std::int32_t* phase = particles.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid), wall = static_cast<std::int32_t>(Phase::wall);
-    // Each fluid or wall particle's grains closer than R_c,i, in ascending grain index. The walls only
-    // complete a grain's kernel: its immersed fraction and -grad p at it (exchange_forces). The grid
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), wall = static_cast<std::int32_t>(Phase::wall),
+               solid = static_cast<std::int32_t>(Phase::solid);
+    // Each fluid, wall or SPH solid particle's grains closer than R_c,i, in ascending grain index. The
+    // walls only complete a grain's kernel: its immersed fraction and -grad p at it; the solids its
+    // immersed fraction alone (exchange_forces). The grid
     // search (most of this stage where grains step far more often than the fluid's lists are rebuilt)
     // runs only when the candidates within R_c,i + skin go stale.
     if (candidates_stale(grains, particles)) {
         skin_ = ng > 0 ? candidate_skin * *std::min_element(reach_.begin(), reach_.end()) : 0.0;
         candidates_.build(
-            particles.position(), n, [&](Index a) { return phase[a] == fluid || phase[a] == wall; },
+            particles.position(), n,
+            [&](Index a) { return phase[a] == fluid || phase[a] == wall || phase[a] == solid; },
             grains.position(), reach_.data(), ng, skin_, box_);
         candidate_generation_ = particles.generation();
         particle_at_search_.assign(particles.position(), particles.position() + n);
@@ -153,7 +156,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
     const Vec* xg = grains.position();
     const double mu = prm.viscosity;
     const std::int32_t* phase = particles.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
     std::visit(
         [&](const auto& type) {
             using K = std::decay_t<decltype(type)>;
@@ -162,12 +165,18 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 const Index first = grain_start_[gi], last = grain_start_[gi + 1];
                 // Wall particles (their Adami pressure: the fluid's, continued into the wall) complete the
                 // kernel for the pressure and the immersed fraction; v_f and eps are the water's alone.
-                double shepard = 0.0, eps = 0.0, pressure = 0.0, walls = 0.0, wall_pressure = 0.0;
+                // SPH solid particles (an AWJ's target) complete the immersed fraction only: their
+                // pressure is the solid's mean stress, not the water's, and must not push the grain.
+                double shepard = 0.0, eps = 0.0, pressure = 0.0, walls = 0.0, wall_pressure = 0.0, solids = 0.0;
                 Vec vf = Vec::zero();
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
                     const double vw = m[a] / rho[a] * weight_[s];  // V_a W_ia
+                    if (phase[a] == solid) {
+                        solids += vw;
+                        continue;
+                    }
                     if (phase[a] != fluid) {
                         walls += vw;
                         wall_pressure += p[a] * vw;
@@ -198,6 +207,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
+                    if (phase[a] == solid) continue;
                     const Vec xia = box_.nearest_image(xg[i] - x[a]);
                     const double r2 = core::norm2(xia);
                     const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_i W_ia = xia f
@@ -218,11 +228,11 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 in.viscosity = prm.viscosity;
                 const double c = drag_coefficient(prm.drag, in);
                 // A grain partly out of the fluid (entering a jet, at a free surface) takes the immersed
-                // fraction of the force: the part of its kernel that is not air, water S_i and walls
-                // (a grain on the floor under water is wholly immersed, though walls fill part of its
-                // kernel). The reaction (eq. 50) then gives no particle more than V_i W_ai times it,
-                // however few particles are near.
-                const double immersed = std::min(shepard + walls, 1.0);
+                // fraction of the force: the part of its kernel that is not air, water S_i, walls and
+                // solids (a grain on the floor under water, or at an AWJ target's surface, is wholly
+                // immersed, though the floor or the target fills part of its kernel). The reaction (eq.
+                // 50) then gives no particle more than V_i W_ai times it, however few particles are near.
+                const double immersed = std::min(shepard + walls + solids, 1.0);
                 const Vec drag = u * (c * immersed);                                    // eq. (44)
                 const Vec force = (minus_grad_p + div_tau) * (volume * immersed) + drag;  // eq. (42)
                 grain_.porosity[gi] = eps;

@@ -5,7 +5,8 @@
 //
 // Only fluid SPH particles exchange forces with grains: walls and SPH solids meet grains through the
 // penalty contact. Wall particles are paired too, to complete a grain's kernel near a wall: they count
-// in its immersed fraction and, with their Adami pressure, in -grad p at the grain.
+// in its immersed fraction and, with their Adami pressure, in -grad p at the grain. SPH solid particles
+// are paired for the immersed fraction alone (their pressure is the solid's, not the water's).
 // Grain i reaches the fluid particles a within R_c,i = radius_factor d_i with the SPH kernel of
 // smoothing length h_c,i = R_c,i / 2 (W_ai below).
 #pragma once
@@ -52,7 +53,7 @@ public:
                        const neighbors::PeriodicBox<Dim>& box = {})
         : parameters_(parameters), kernel_type_(kernel_type), box_(box) {}
 
-    /// Lists the fluid and wall particles within R_c,i of every grain and the weights W_ai, at the
+    /// Lists the fluid, wall and SPH solid particles within R_c,i of every grain and the weights W_ai, at the
     /// current positions. Valid while neither set changes.
     void find_pairs(const dem::GrainSet<Dim>& grains, const particles::SphParticles<Dim>& particles);
 
