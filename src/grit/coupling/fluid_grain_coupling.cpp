@@ -68,13 +68,21 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
         },
         kernel_type_);
 
-    // The grain side: each grain's pairs in particle order (fixed at any thread count).
-    grain_start_.assign(static_cast<std::size_t>(ng) + 1, 0);
-    for (std::size_t s = 0; s < np; ++s) ++grain_start_[static_cast<std::size_t>(idx[s]) + 1];
-    for (Index i = 0; i < ng; ++i) grain_start_[static_cast<std::size_t>(i) + 1] += grain_start_[static_cast<std::size_t>(i)];
-    grain_order_.resize(np);
-    std::vector<Index> next(grain_start_.begin(), grain_start_.end() - 1);
-    for (std::size_t s = 0; s < np; ++s) grain_order_[static_cast<std::size_t>(next[static_cast<std::size_t>(idx[s])]++)] = static_cast<Index>(s);
+    // The grain side: each grain's pairs in particle order (fixed at any thread count), those with water
+    // and walls and, apart, those with SPH solids (which only complete the immersed fraction).
+    auto order_by_grain = [&](bool with_solids, std::vector<Index>& start, std::vector<Index>& order) {
+        auto wanted = [&](std::size_t s) { return (phase[pair_particle_[s]] == solid) == with_solids; };
+        start.assign(static_cast<std::size_t>(ng) + 1, 0);
+        for (std::size_t s = 0; s < np; ++s)
+            if (wanted(s)) ++start[static_cast<std::size_t>(idx[s]) + 1];
+        for (Index i = 0; i < ng; ++i) start[static_cast<std::size_t>(i) + 1] += start[static_cast<std::size_t>(i)];
+        order.resize(static_cast<std::size_t>(start.back()));
+        std::vector<Index> next(start.begin(), start.end() - 1);
+        for (std::size_t s = 0; s < np; ++s)
+            if (wanted(s)) order[static_cast<std::size_t>(next[static_cast<std::size_t>(idx[s])]++)] = static_cast<Index>(s);
+    };
+    order_by_grain(false, grain_start_, grain_order_);
+    order_by_grain(true, solid_start_, solid_order_);
 }
 
 template <int Dim>
@@ -156,7 +164,7 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
     const Vec* xg = grains.position();
     const double mu = prm.viscosity;
     const std::int32_t* phase = particles.phase();
-    const auto fluid = static_cast<std::int32_t>(Phase::fluid), solid = static_cast<std::int32_t>(Phase::solid);
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
     std::visit(
         [&](const auto& type) {
             using K = std::decay_t<decltype(type)>;
@@ -165,18 +173,19 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 const Index first = grain_start_[gi], last = grain_start_[gi + 1];
                 // Wall particles (their Adami pressure: the fluid's, continued into the wall) complete the
                 // kernel for the pressure and the immersed fraction; v_f and eps are the water's alone.
-                // SPH solid particles (an AWJ's target) complete the immersed fraction only: their
-                // pressure is the solid's mean stress, not the water's, and must not push the grain.
+                // SPH solid particles (an AWJ's target; their pairs apart) complete the immersed fraction
+                // only: their pressure is the solid's mean stress, not the water's.
                 double shepard = 0.0, eps = 0.0, pressure = 0.0, walls = 0.0, wall_pressure = 0.0, solids = 0.0;
+                for (Index k = solid_start_[gi]; k < solid_start_[gi + 1]; ++k) {
+                    const auto s = static_cast<std::size_t>(solid_order_[static_cast<std::size_t>(k)]);
+                    const Index a = pair_particle_[s];
+                    solids += m[a] / rho[a] * weight_[s];  // V_s W_is
+                }
                 Vec vf = Vec::zero();
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
                     const double vw = m[a] / rho[a] * weight_[s];  // V_a W_ia
-                    if (phase[a] == solid) {
-                        solids += vw;
-                        continue;
-                    }
                     if (phase[a] != fluid) {
                         walls += vw;
                         wall_pressure += p[a] * vw;
@@ -207,7 +216,6 @@ void FluidGrainCoupling<Dim>::exchange_forces(dem::GrainSet<Dim>& grains, partic
                 for (Index k = first; k < last; ++k) {
                     const auto s = static_cast<std::size_t>(grain_order_[static_cast<std::size_t>(k)]);
                     const Index a = pair_particle_[s];
-                    if (phase[a] == solid) continue;
                     const Vec xia = box_.nearest_image(xg[i] - x[a]);
                     const double r2 = core::norm2(xia);
                     const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_i W_ia = xia f

@@ -100,6 +100,7 @@ private:
     std::vector<double> weight_;                 // W_ai, in the order of pairs_
     std::vector<double> reach_;                  // R_c,i per grain
     std::vector<Index> grain_start_, grain_order_;  // pairs of grain i: grain_order_[grain_start_[i] ..]
+    std::vector<Index> solid_start_, solid_order_;  // its pairs with SPH solid particles, likewise
     std::vector<Index> pair_particle_;           // particle a of each pair
     GrainCouplingState<Dim> grain_;
     std::vector<Vec> grain_force_;               // F_i of the last exchange
