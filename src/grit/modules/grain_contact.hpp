@@ -18,10 +18,13 @@ public:
 
 private:
     void couple();
+    /// Warns (once, at a fresh start) of grains that start in contact with SPH walls or solids.
+    void warn_of_grains_starting_in_contact();
 
     sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
     coupling::GrainBoundaryContact<Dim> contact_;
+    bool start_checked_ = false;
 };
 
 extern template class GrainContactModule<2>;
