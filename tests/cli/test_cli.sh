@@ -391,6 +391,23 @@ expect_input_error "unknown grain material" "grains[0].material" "diamond" "buil
 expect_input_error "restitution out of range" "grain_materials.drop_grain.restitution" "1.5" -- \
     run "$BOUNCE" --set grain_materials.drop_grain.restitution=1.5
 
+# A grain placed in the contact zone of the wall particles (closer than a spacing to its surface) is
+# warned of, by its id; the case as shipped is not.
+SEDIMENT=$ROOT/cases/sedimentation_2d/case.toml
+grit run "$SEDIMENT" --set 'grains[0].position=[1.0e-3, 1.0e-4]' --set time.end=1e-12 --out "$W/in_contact" --quiet
+if [[ $RC -eq 0 ]] && cat "$W/stdout" "$W/stderr" | grep -q "1 grain(s) start in contact with SPH wall or solid" &&
+    cat "$W/stdout" "$W/stderr" | grep -q "grain 0 at (0.001, 0.0001) m"; then
+    pass "a grain starting in contact with the wall particles is warned of"
+else
+    fail "a grain starting in contact with the wall particles is warned of" "rc $RC: $(head -c 300 "$W/stderr")"
+fi
+grit run "$SEDIMENT" --set time.end=1e-12 --out "$W/clear_of_walls" --quiet
+if [[ $RC -eq 0 ]] && ! cat "$W/stdout" "$W/stderr" | grep -q "start in contact"; then
+    pass "a grain clear of the walls is not warned of"
+else
+    fail "a grain clear of the walls is not warned of" "rc $RC: $(head -c 300 "$W/stderr")"
+fi
+
 # Periodic axes: domain.periodic and its older spelling dem.periodic must agree; a periodic axis must be
 # three neighbour-list radii long; periodic solids are refused.
 POIS=$ROOT/cases/poiseuille_periodic_2d/case.toml
