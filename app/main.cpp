@@ -3,6 +3,8 @@
 #include <spawn.h>
 #include <sys/wait.h>
 #include <fmt/format.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cctype>
@@ -143,6 +145,9 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Warnings of the library (spdlog's default logger) go to stderr, with grit's other messages; stdout
+    // carries only what a command is asked for.
+    spdlog::set_default_logger(spdlog::stderr_color_mt("grit"));
     CLI::App app{"grit: SPH-DEM simulation of erosion by fluids carrying abrasive grains"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("grit " GRIT_VERSION " (git ") + grit::sim::git_revision() + ")");
