@@ -160,9 +160,9 @@ TEST(ChuteWear, AgreesWithLiggghts) {
 // jet reaches the splitter at 1.5 ms and the cups' rims from about 4 ms. The splitter is a 40-degree
 // wedge of a sheet of zero thickness (a thin wall). Checked: no water crosses from one cup to the other
 // (a particle seen deep in one cup is never seen in the other: the two sides of the splitter are apart);
-// no water gets behind the sheet (into the wedge under the edge, within c/2 of the splitter's plane,
-// where the cusp of the bucket's first form let up to 30 particles in by 6 ms), and none presses a
-// spacing into the cups' walls; the
+// almost no water gets behind the sheet (into the wedge under the edge, within c/2 of the splitter's
+// plane: at most 5 particles, where the cusp of the bucket's first form let up to 30 in by 6 ms), and
+// none presses a spacing into the cups' walls; the
 // splitter divides the jet evenly (the water beyond each outer rim within 10 % of the other's: the bucket
 // and the jet are symmetric); no dead water sits on the splitter's edge (particles slower than a quarter
 // of the jet's speed within 2 spacings of it, under 5 % of those there: the edge is a stagnation line,
@@ -236,7 +236,8 @@ TEST(PeltonBucket, JetSplitWithoutCrossingLeakOrDeadWaterAndWearMidBucket) {
                 mean_x);
     ASSERT_GT(cup_of.size(), 500u);
     EXPECT_EQ(crossed, 0);
-    EXPECT_EQ(in_cusp, 0);
+    // Chaos moves a particle or two: 0 / 2 / 0 / 0 with the sand seeds 11 (the case's) to 14.
+    EXPECT_LE(in_cusp, 5);
     EXPECT_LT(deepest, dx);
     ASSERT_GT(left + right, 200);
     EXPECT_NEAR(left, right, 0.10 * 0.5 * (left + right));
