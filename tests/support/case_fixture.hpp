@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,15 @@ inline bool long_tests() {
 /// Reads cases/<relative> with overrides (reduced sizes for CI).
 inline io::CaseSpec load_case(const std::string& relative, const std::vector<std::string>& overrides = {}) {
     return io::read_case(std::filesystem::path(GRIT_SOURCE_DIR) / "cases" / relative, overrides);
+}
+
+/// Reads a case given as TOML text (written to a temporary file named after `name`, then removed).
+inline io::CaseSpec read_case_text(const std::string& text, const std::string& name) {
+    const auto file = std::filesystem::temp_directory_path() / ("grit_test_" + name + ".toml");
+    std::ofstream(file) << text;
+    io::CaseSpec spec = io::read_case(file);
+    std::filesystem::remove(file);
+    return spec;
 }
 
 /// The hydrostatic case's water and numerics as a free disc (sphere) of radius 0.06 m centred at 0.1 m,

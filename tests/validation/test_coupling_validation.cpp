@@ -12,14 +12,15 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "support/case_fixture.hpp"
+#include "support/case_text.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
+using grit::testing::read_case_text;
+using grit::testing::replaced;
 
 namespace {
 
@@ -93,10 +94,7 @@ namespace {
 // (2D, no gravity), its centre `height` above y = 0, after 1e-5 s (a few steps): `floor` is "solid"
 // (a soft elastic block, y < 0), "wall" (wall particles) or "none" (water below y = 0 too).
 double drag_along_x(double height, const std::string& floor) {
-    const auto file = std::filesystem::temp_directory_path() / ("grit_immersed_" + floor + ".toml");
-    {
-        std::ofstream out(file);
-        out << R"([simulation]
+    std::string text = R"([simulation]
 dimension = 2
 [time]
 end = 1.0e-5
@@ -128,19 +126,26 @@ restitution = 0.5
 diameter = 1.0e-4
 [[fluid]]
 shape = "box"
-min = [0.0, )" << (floor == "none" ? "-1.2e-3" : "0.0") << R"(]
+min = [0.0, 0.0]
 max = [4.0e-3, 4.0e-3]
 material = "water"
+[[grains]]
+material = "light"
+position = [2.0e-3, HEIGHT]
+velocity = [0.01, 0.0]
+[coupling]
+radius = 5.0
+drag = "gidaspow"
+[domain]
+min = [-1.0e-3, -2.0e-3]
+max = [5.0e-3, 6.0e-3]
 )";
-        if (floor == "solid")
-            out << "[[solid]]\nshape = \"box\"\nmin = [0.0, -1.2e-3]\nmax = [4.0e-3, 0.0]\nmaterial = \"gel\"\n";
-        if (floor == "wall") out << "[[wall]]\nshape = \"box\"\nmin = [0.0, -1.2e-3]\nmax = [4.0e-3, 0.0]\n";
-        out << "[[grains]]\nmaterial = \"light\"\nposition = [2.0e-3, " << height
-            << "]\nvelocity = [0.01, 0.0]\n[coupling]\nradius = 5.0\ndrag = \"gidaspow\"\n[domain]\n"
-               "min = [-1.0e-3, -2.0e-3]\nmax = [5.0e-3, 6.0e-3]\n";
-    }
-    grit::sim::Simulation<2> sim(grit::io::read_case(file), in_memory());
-    std::filesystem::remove(file);
+    text = replaced(text, "HEIGHT", std::to_string(height));
+    const std::string below = "min = [0.0, -1.2e-3]\nmax = [4.0e-3, 0.0]\n";
+    if (floor == "none") text = replaced(text, "min = [0.0, 0.0]", "min = [0.0, -1.2e-3]");
+    if (floor == "solid") text += "[[solid]]\nshape = \"box\"\n" + below + "material = \"gel\"\n";
+    if (floor == "wall") text += "[[wall]]\nshape = \"box\"\n" + below;
+    grit::sim::Simulation<2> sim(read_case_text(text, "immersed_" + floor), in_memory());
     sim.advance_to(1.0e-5);
     return sim.state().grains->grains().fields().get<grit::core::Vec<2>>("drag_force").data()[0][0];
 }

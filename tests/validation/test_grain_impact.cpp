@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "grit/io/case_reader.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -81,10 +79,7 @@ namespace {
 // Grain-wall contact against the boundary particles of the SPH walls (not a plane): a garnet grain
 // dropped onto a block of wall particles bounces off it and never sinks into it.
 TEST(GrainImpact, GrainBouncesOffWallParticles) {
-    const auto file = std::filesystem::temp_directory_path() / "grit_grain_on_wall_particles.toml";
-    {
-        std::ofstream out(file);
-        out << R"([simulation]
+    const std::string text = R"([simulation]
 dimension = 2
 [time]
 end = 0.02
@@ -107,9 +102,7 @@ diameter = 2.0e-3
 min = [-6.0e-3, -2.0e-3]
 max = [6.0e-3, 6.0e-3]
 )";
-    }
-    grit::sim::Simulation<2> sim(grit::io::read_case(file), in_memory());
-    std::filesystem::remove(file);
+    grit::sim::Simulation<2> sim(grit::testing::read_case_text(text, "grain_on_wall_particles"), in_memory());
     // The wall's top particles sit at y = -dx/2; the grain's surface may reach d_ini above them.
     // Dropped from rest 0.5 mm above the wall: it reaches about sqrt(2 g 0.5 mm) = 0.1 m/s.
     double lowest = 1.0, upward = -1.0, highest_after = -1.0;

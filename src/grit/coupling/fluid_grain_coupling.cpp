@@ -28,9 +28,9 @@ void FluidGrainCoupling<Dim>::find_pairs(const dem::GrainSet<Dim>& grains,
                solid = static_cast<std::int32_t>(Phase::solid);
     // Each fluid, wall or SPH solid particle's grains closer than R_c,i, in ascending grain index. The
     // walls only complete a grain's kernel: its immersed fraction and -grad p at it; the solids its
-    // immersed fraction alone (exchange_forces). The grid
-    // search (most of this stage where grains step far more often than the fluid's lists are rebuilt)
-    // runs only when the candidates within R_c,i + skin go stale.
+    // immersed fraction alone (exchange_forces). The grid search (most of this stage where grains step
+    // far more often than the fluid's lists are rebuilt) runs only when the candidates within R_c,i +
+    // skin go stale.
     if (candidates_stale(grains, particles)) {
         skin_ = ng > 0 ? candidate_skin * *std::min_element(reach_.begin(), reach_.end()) : 0.0;
         candidates_.build(

@@ -106,14 +106,13 @@ void GrainContactModule<Dim>::warn_of_grains_starting_in_contact() {
         if (first < 0 || grains.id()[c.grain] < grains.id()[first]) first = c.grain;
     }
     if (count == 0) return;
-    std::string where;
-    for (int k = 0; k < Dim; ++k) where += fmt::format("{}{:.4g}", k ? ", " : "", grains.position()[first][k]);
+    const auto& x = grains.position()[first];
     spdlog::warn(
         "{} grain(s) start in contact with SPH wall or solid particles (closer than the particle spacing "
         "{:.4g} m to a grain's surface; the first: grain {} at ({}) m): the contact of eqs. (12)-(14) pushes "
         "them out in a step, which can throw them off fast. Place grains at least a spacing from walls "
         "and solids.",
-        count, setup_.spec.particle_spacing, grains.id()[first], where);
+        count, setup_.spec.particle_spacing, grains.id()[first], fmt::join(std::vector<double>(x.c, x.c + Dim), ", "));
 }
 
 template class GrainContactModule<2>;
