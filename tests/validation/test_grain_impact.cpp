@@ -52,23 +52,24 @@ TEST(GrainImpact, MomentumOfGrainAndPlateIsConserved) {
 namespace {
 
 // The drop test as a user runs it (cases/dem_bounce_2d, first seed paper Fig. 4): the impact speeds in
-// the impact log fall by e per bounce, so the rebound heights by e^2 (issue 5: within 2 %).
+// the impact log fall by e per bounce, so the rebound heights by e^2 (issue 5: within 2 %). The case's own
+// e = 0.8, to just past the fourth impact (0.470 s): the garnet's stiff contact takes 3.6e7 steps per second of
+// fall, the longest DEM test (e = 1 is DemDropTest.ElasticGrainReturnsToItsHeight's, on the same law).
 TEST(GrainImpact, DropTestCaseReboundsByRestitutionSquared) {
-    for (const double e : {1.0, 0.8}) {
-        grit::sim::Simulation<2> sim(
-            load_case("dem_bounce_2d/case.toml", {"grain_materials.drop_grain.restitution=" + std::to_string(e)}),
-            in_memory());
-        sim.advance_to(0.75);
-        const auto& log = sim.impacts().records();
-        ASSERT_GE(log.size(), 4u) << "e = " << e;
-        // First impact: free fall through 45 mm, v = sqrt(2 g h).
-        EXPECT_NEAR(log[0].speed, std::sqrt(2.0 * 9.81 * 0.045), 1e-3 * log[0].speed);
-        for (std::size_t k = 1; k < 4; ++k) {
-            const double height_ratio = std::pow(log[k].speed / log[k - 1].speed, 2.0);
-            EXPECT_NEAR(height_ratio, e * e, 0.02 * e * e) << "e = " << e << ", bounce " << k;
-            EXPECT_EQ(log[k].target, "floor");
-            EXPECT_NEAR(log[k].angle, 90.0, 1e-6);
-        }
+    const double e = 0.8;
+    grit::sim::Simulation<2> sim(
+        load_case("dem_bounce_2d/case.toml", {"grain_materials.drop_grain.restitution=" + std::to_string(e)}),
+        in_memory());
+    sim.advance_to(0.5);
+    const auto& log = sim.impacts().records();
+    ASSERT_GE(log.size(), 4u);
+    // First impact: free fall through 45 mm, v = sqrt(2 g h).
+    EXPECT_NEAR(log[0].speed, std::sqrt(2.0 * 9.81 * 0.045), 1e-3 * log[0].speed);
+    for (std::size_t k = 1; k < 4; ++k) {
+        const double height_ratio = std::pow(log[k].speed / log[k - 1].speed, 2.0);
+        EXPECT_NEAR(height_ratio, e * e, 0.02 * e * e) << "bounce " << k;
+        EXPECT_EQ(log[k].target, "floor");
+        EXPECT_NEAR(log[k].angle, 90.0, 1e-6);
     }
 }
 
