@@ -53,8 +53,9 @@ namespace {
 
 // The drop test as a user runs it (cases/dem_bounce_2d, first seed paper Fig. 4): the impact speeds in
 // the impact log fall by e per bounce, so the rebound heights by e^2 (issue 5: within 2 %). The case's own
-// e = 0.8, to just past the fourth impact (0.470 s): the garnet's stiff contact takes 3.6e7 steps per second of
-// fall, the longest DEM test (e = 1 is DemDropTest.ElasticGrainReturnsToItsHeight's, on the same law).
+// e = 0.8, to just past the fourth impact (0.470 s): the garnet's stiff contact needs 3.6e7 steps per second
+// of fall, which makes this the longest DEM test. e = 1 is checked on the same law by
+// DemDropTest.ElasticGrainReturnsToItsHeight.
 TEST(GrainImpact, DropTestCaseReboundsByRestitutionSquared) {
     const double e = 0.8;
     grit::sim::Simulation<2> sim(
