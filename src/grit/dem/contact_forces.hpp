@@ -1,6 +1,8 @@
-// The grain contact loops: grain-grain over the full neighbour lists and grain-wall over the planes, in
-// gather form (each grain writes only its own force, torque and history), so results are bit-identical
-// for any thread count. Law formulas live in contact_laws.hpp; this file holds geometry and loops.
+// The grain contact loops: grain-grain over each pair once (neighbors::sum_pairs_once: the grain of
+// lower index evaluates the pair and both receive its force, summed in an order the lists fix) and
+// grain-wall over the planes (each grain writes only its own force, torque and history), so results are
+// bit-identical for any thread count. Law formulas live in contact_laws.hpp; this file holds geometry and
+// loops.
 //
 // 2D: a disc collides like the sphere of its diameter. The law is evaluated with the sphere masses
 // (contact_mass) and gives a force in N; the discs receive that force times s = m*_disc / m*_sphere, in
@@ -22,6 +24,7 @@
 #include "grit/dem/plane_wall.hpp"
 #include "grit/dem/spin.hpp"
 #include "grit/dem/grain_loop.hpp"
+#include "grit/neighbors/half_lists.hpp"
 
 namespace grit::dem {
 
@@ -82,73 +85,81 @@ template <int Dim, class Law>
     }
 }
 
-/// Per-entry results of the pair pass, reused between steps (sized by the neighbour list). A pair's
-/// results sit in the entry of its body b (the mirror of body a's entry), where the completion pass
-/// reads them in row order.
+/// What the pair pass adds up per grain: the forces of its pairs and their lever moments n x F_t (not
+/// yet times its radius).
 template <int Dim>
-struct PairScratch {
-    /// The force on body a of the entry's pair and n x F_t, side by side (read together).
-    struct Result {
-        core::Vec<Dim> force;
-        Spin<Dim> lever_moment;
-    };
-    std::vector<Result> result;
-    /// 1 where the entry's pair touched at the last pair pass, in both of its entries; result holds
-    /// values only where it is 1. All 1 after reset() (unknown), so the first pass settles every pair.
-    std::vector<std::uint8_t> touching;
-
-    /// Sizes the scratch to fresh lists of `entries` entries.
-    void reset(std::size_t entries) {
-        result.resize(entries);
-        touching.assign(entries, 1);
+struct PairSum {
+    core::Vec<Dim> force = core::Vec<Dim>::zero();
+    Spin<Dim> lever_moment = zero_spin<Dim>();
+    PairSum& operator+=(const PairSum& o) noexcept {
+        force += o.force;
+        lever_moment += o.lever_moment;
+        return *this;
     }
 };
 
-/// The pair pass of the grain-grain contacts: each pair is evaluated once, by the grain with the lower
-/// id (body a), which writes its own force and torque, force[a] = the sum of its pairs' forces and
-/// torque[a] = the sum of their lever moments n x F_t (not yet times R_a), its own entries' history,
-/// and the pair's results into body b's entry of the pair (the mirror entry: one writer per entry, so
-/// no thread writes where another reads or writes). A pair apart costs one distance test (and clears
-/// its entries when it parts). finish_grain_forces() then completes every grain.
+/// Scratch of the pair pass, kept between steps: neighbors::sum_pairs_once's own and spill rows, and per
+/// pair entry 1 where the pair touched at the last pass (so a pair apart costs a byte, not its history).
+template <int Dim>
+struct PairScratch {
+    std::vector<PairSum<Dim>> own, spill;
+    std::vector<std::uint8_t> touching;
+    /// w_i R_i of every grain, rounded before the pairs add them: a pair then sees the same sum
+    /// w_a R_a + w_b R_b whichever of its grains evaluates it (a contracted w_b * R_b + w_a R_a would not be).
+    std::vector<Spin<Dim>> spin_radius;
+
+    /// For fresh lists of `entries` pairs: all 1 (unknown), so the first pass settles every pair.
+    void reset(std::size_t entries) { touching.assign(entries, 1); }
+};
+
+/// The pair pass of the grain-grain contacts: each pair of `pairs` (the grain lists cut into each pair
+/// once) is evaluated by its grain of lower index, body a, with the tangential history of its entry;
+/// body a receives the force and b its exact negative (bit for bit), both the lever moment n x F_t (the
+/// torque of body k is R_k n x F_t for both: F_t and the lever flip together). Sets force[i] = the sum of
+/// i's pair forces and torque[i] = the sum of their lever moments (not yet times R_i) for every grain. A
+/// pair apart costs one distance test, and clears its history when it parts. finish_grain_forces() then
+/// completes every grain. (Completing each grain in the pair pass's last loop instead, saving a pass over
+/// the grains, was no faster: docs/performance.md.)
 template <int Dim, class Law>
-void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, ContactHistory<Dim>& history,
+void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, ContactHistory<Dim>& history,
                      const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law, double dt,
                      PairScratch<Dim>& scratch) {
     using Vec = core::Vec<Dim>;
-    if (scratch.touching.size() != list.entry_count()) scratch.reset(list.entry_count());
+    if (scratch.touching.size() != pairs.upper_size()) scratch.reset(pairs.upper_size());
+    scratch.spin_radius.resize(static_cast<std::size_t>(grains.size()));
+    {
+        Spin<Dim>* wr = scratch.spin_radius.data();
+        const Spin<Dim>* w = std::as_const(grains).angular_velocity();
+        const double* r = std::as_const(grains).radius();
+        for_each_grain(grains.size(), [&](Index i) { wr[i] = w[i] * r[i]; });
+    }
     // The arrays, copied into each grain's call: a local copy stays in registers, where pointers read
-    // through the closure would be reloaded after every store to the byte flags (which may alias them).
+    // through the closure would be reloaded after every store (which may alias them).
     const struct {
         const Vec* x;
         const Vec* v;
-        const Spin<Dim>* w;
+        const Spin<Dim>* wr;
         const double* radius;
         const double* mass;
         const std::int32_t* material;
-        Vec* force;
-        Spin<Dim>* torque;
         Vec* h;
-        const Index* neighbor;
-        const Index* mirror;
-        typename PairScratch<Dim>::Result* result;
+        const Index* partner;
         std::uint8_t* touching;
     } arrays{std::as_const(grains).position(), std::as_const(grains).velocity(),
-             std::as_const(grains).angular_velocity(), std::as_const(grains).radius(),
-             std::as_const(grains).mass(), std::as_const(grains).material(), grains.force(), grains.torque(),
-             history.values(), list.indices(), list.mirrors(), scratch.result.data(),
+             std::as_const(scratch.spin_radius).data(), std::as_const(grains).radius(),
+             std::as_const(grains).mass(), std::as_const(grains).material(), history.values(), pairs.upper(),
              scratch.touching.data()};
-    for_each_grain(grains.size(), [&](Index a) {
+    auto visit = [&](Index a, PairSum<Dim>& sum_a, auto&& share) {
         const auto p = arrays;
         const Vec xa = p.x[a], va = p.v[a];
-        const Spin<Dim> wra = p.w[a] * p.radius[a];
+        const Spin<Dim> wra = p.wr[a];
         const double ra = p.radius[a], ma = p.mass[a];
         const double sphere_a = contact_mass<Dim>(ma, ra);
         const std::int32_t mat_a = p.material[a];
         Vec fa = Vec::zero();
         Spin<Dim> ta = zero_spin<Dim>();
-        const Index first = list.begin(a), last = list.split(a);
-        for (Index k = first; k < last; ++k) {  // partners of higher id
-            const Index b = p.neighbor[k];
+        for (Index k = pairs.upper_begin(a); k < pairs.upper_end(a); ++k) {  // partners of higher index
+            const Index b = p.partner[k];
             const Vec d = domain.nearest_image(p.x[b] - xa);
             const double reach = ra + p.radius[b];
             const double r2 = core::norm2(d);
@@ -156,42 +167,44 @@ void grain_pair_pass(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, 
                 if (p.touching[k]) {
                     p.h[k] = Vec::zero();
                     p.touching[k] = 0;
-                    p.touching[p.mirror[k]] = 0;
                 }
                 continue;
             }
             const double r = std::sqrt(r2);
             const Vec n = d * (1.0 / r);
-            const Vec vab = va - p.v[b] + spin_cross<Dim>(wra + p.w[b] * p.radius[b], n);
+            const Vec vab = va - p.v[b] + spin_cross<Dim>(wra + p.wr[b], n);
             const double mb = p.mass[b], sphere_b = contact_mass<Dim>(mb, p.radius[b]);
             const ContactKinematics c{reach - r, 0.0, ra, p.radius[b], sphere_a, sphere_b};
             const ContactResponse<Dim> res =
                 contact_response<Dim>(law, materials.at(mat_a, p.material[b]), n, vab, c, p.h[k], dt,
                                       disc_force_scale<Dim>(ma, sphere_a, mb, sphere_b));
             p.h[k] = res.history;
-            const Index m = p.mirror[k];
-            p.result[m] = {res.force, res.lever_moment};
-            if (!p.touching[k]) {  // a new contact (mostly they last)
-                p.touching[k] = 1;
-                p.touching[m] = 1;
-            }
+            p.touching[k] = 1;
+            PairSum<Dim>& sum_b = share(b);
+            sum_b.force -= res.force;
+            sum_b.lever_moment += res.lever_moment;
             fa += res.force;
             ta += res.lever_moment;
         }
-        p.force[a] = fa;
-        p.torque[a] = ta;
-    });
+        sum_a.force += fa;
+        sum_a.lever_moment += ta;
+    };
+    Vec* force = grains.force();
+    Spin<Dim>* torque = grains.torque();
+    auto finish = [&](Index i, const PairSum<Dim>& total) {
+        force[i] = total.force;
+        torque[i] = total.lever_moment;
+    };
+    neighbors::sum_pairs_once(pairs, scratch.own, scratch.spill, visit, finish);
 }
 
-/// Completes the force stage after grain_pair_pass(): adds to each grain, as body b, the exact negative
-/// of its pairs' forces (from its own entries, where body a left them, so the two grains of a pair
-/// receive equal and opposite forces bit for bit), its weight m g and the contacts of the plane walls (wall_history[w][i]
-/// is grain i's tangential history against wall w; a wall is body b of infinite radius and mass, at
-/// rest). With half_kick != 0 it then kicks the grain, v += half_kick F/m, w += half_kick T/I (the
-/// second half kick of a step no external stage adds forces to). Each grain writes only its own data.
+/// Completes the force stage after grain_pair_pass(): adds to each grain its weight m g and the contacts
+/// of the plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall is body
+/// b of infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick
+/// F/m, w += half_kick T/I (the second half kick of a step no external stage adds forces to). Each grain
+/// writes only its own data.
 template <int Dim, class Law>
-void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& list, const PairScratch<Dim>& scratch,
-                         const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
+void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
                          const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
                          const Law& law, double dt, double half_kick) {
     using Vec = core::Vec<Dim>;
@@ -204,24 +217,12 @@ void finish_grain_forces(GrainSet<Dim>& grains, const GrainNeighborList<Dim>& li
     const std::int32_t* material = std::as_const(grains).material();
     Vec* force = grains.force();
     Spin<Dim>* torque = grains.torque();
-    const typename PairScratch<Dim>::Result* results = scratch.result.data();
-    const std::uint8_t* touching = scratch.touching.data();
     constexpr double infinite = std::numeric_limits<double>::infinity();
     const bool kick = half_kick != 0.0;
     const std::int32_t* fixed = fixed_flags(std::as_const(grains));
     for_each_grain(grains.size(), [&](Index i) {
-        Vec f = force[i];
-        Spin<Dim> t = torque[i];
-        const typename PairScratch<Dim>::Result* const pair = results;
-        const std::uint8_t* const on = touching;
-        const Index first = list.split(i), last = list.end(i);
-        for (Index k = first; k < last; ++k) {  // i is body b: the exact negative
-            if (!on[k]) continue;
-            f -= pair[k].force;
-            t += pair[k].lever_moment;
-        }
-        f = gravity * mass[i] + f;
-        t = t * radius[i];
+        Vec f = gravity * mass[i] + force[i];
+        Spin<Dim> t = torque[i] * radius[i];
         for (std::size_t s = 0; s < walls.size(); ++s) {
             const PlaneWall<Dim>& wall = walls[s];
             Vec& h = wall_history[s][i];

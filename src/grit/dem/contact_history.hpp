@@ -1,10 +1,11 @@
 // Tangential spring history of grain-grain contacts (first seed paper eq. 9), keyed by persistent grain
-// ids. Values sit beside the neighbour-list entries (no look-up in the contact loop); when the lists
-// are rebuilt, possibly after the grains were re-sorted or some removed, save() / restore() carry each
+// ids. Values sit beside the pair lists' entries (no look-up in the contact loop); when the lists are
+// rebuilt, possibly after the grains were re-sorted or some removed, save() / restore() carry each
 // contact's value over by the pair of ids.
 //
-// Each pair's value is held once, in the row of its body a (the grain with the lower id); the entry of
-// body b stays zero.
+// Each pair's value is held once, in the entry of its body a: the grain of lower index, which evaluates
+// the pair (neighbors::HalfLists, each pair once). A re-sort can turn a pair round; its value is then
+// negated (v_a - v_b and the normal both flip, so the history's increments v_t dt do).
 #pragma once
 
 #include <algorithm>
@@ -14,9 +15,9 @@
 
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
-#include "grit/dem/grain_neighbors.hpp"
 #include "grit/dem/grain_loop.hpp"
 #include "grit/io/hdf5_file.hpp"
+#include "grit/neighbors/half_lists.hpp"
 
 namespace grit::dem {
 
@@ -25,25 +26,26 @@ class ContactHistory {
 public:
     using Vec = core::Vec<Dim>;
 
-    /// delta_t of each neighbour-list entry [m] (zero when the pair is not in contact).
+    /// delta_t of each same-phase entry of the pair lists (HalfLists::upper) [m]; zero when the pair is
+    /// not in contact.
     Vec* values() noexcept { return values_.data(); }
     const Vec* values() const noexcept { return values_.data(); }
     std::size_t size() const noexcept { return values_.size(); }
 
     /// Keeps the non-zero values of the current lists with their grain ids (before a rebuild or a
-    /// reordering). `ids` are those of the n grains the lists were built for (grains appended since
-    /// have no history yet).
-    void save(const std::int32_t* ids, Index n, const GrainNeighborList<Dim>& list) {
+    /// reordering). `ids` are those of the n grains the lists were cut for (grains appended since have no
+    /// history yet).
+    void save(const std::int32_t* ids, Index n, const neighbors::HalfLists& pairs) {
         saved_rows_.clear();
         saved_partner_.clear();
         saved_value_.clear();
-        if (values_.size() != list.entry_count() || list.grain_count() > n) return;  // no history yet
-        for (Index i = 0; i < list.grain_count(); ++i) {
+        if (values_.size() != pairs.upper_size() || pairs.particle_count() > n) return;  // no history yet
+        for (Index i = 0; i < pairs.particle_count(); ++i) {
             const auto first = static_cast<Index>(saved_partner_.size());
-            for (Index k = list.begin(i); k < list.end(i); ++k) {
+            for (Index k = pairs.upper_begin(i); k < pairs.upper_end(i); ++k) {
                 const Vec& v = values_[static_cast<std::size_t>(k)];
                 if (core::norm2(v) == 0.0) continue;
-                saved_partner_.push_back(ids[list.indices()[k]]);
+                saved_partner_.push_back(ids[pairs.upper()[k]]);
                 saved_value_.push_back(v);
             }
             if (static_cast<Index>(saved_partner_.size()) > first)
@@ -53,21 +55,28 @@ public:
                   [](const SavedRow& a, const SavedRow& b) { return a.owner < b.owner; });
     }
 
-    /// Sizes the values to the new lists and fills each entry with the saved value of its pair of ids.
-    void restore(const std::int32_t* ids, const GrainNeighborList<Dim>& list) {
-        values_.assign(list.entry_count(), Vec::zero());
+    /// Sizes the values to the new lists and fills each entry with the saved value of its pair of ids,
+    /// negated where the pair's order turned round.
+    void restore(const std::int32_t* ids, const neighbors::HalfLists& pairs) {
+        values_.assign(pairs.upper_size(), Vec::zero());
         if (saved_rows_.empty()) return;
-        for_each_grain(list.grain_count(), [&](Index i) {
-            const auto row = std::lower_bound(saved_rows_.begin(), saved_rows_.end(), ids[i],
+        // The saved value of the pair (owner, partner) as seen from owner, if there is one.
+        auto find = [&](std::int32_t owner, std::int32_t partner) -> const Vec* {
+            const auto row = std::lower_bound(saved_rows_.begin(), saved_rows_.end(), owner,
                                               [](const SavedRow& r, std::int32_t id) { return r.owner < id; });
-            if (row == saved_rows_.end() || row->owner != ids[i]) return;
-            for (Index k = list.begin(i); k < list.end(i); ++k) {
-                const std::int32_t partner = ids[list.indices()[k]];
-                for (Index s = row->first; s < row->last; ++s)
-                    if (saved_partner_[static_cast<std::size_t>(s)] == partner) {
-                        values_[static_cast<std::size_t>(k)] = saved_value_[static_cast<std::size_t>(s)];
-                        break;
-                    }
+            if (row == saved_rows_.end() || row->owner != owner) return nullptr;
+            for (Index s = row->first; s < row->last; ++s)
+                if (saved_partner_[static_cast<std::size_t>(s)] == partner)
+                    return &saved_value_[static_cast<std::size_t>(s)];
+            return nullptr;
+        };
+        for_each_grain(pairs.particle_count(), [&](Index i) {
+            for (Index k = pairs.upper_begin(i); k < pairs.upper_end(i); ++k) {
+                const std::int32_t partner = ids[pairs.upper()[k]];
+                if (const Vec* v = find(ids[i], partner))
+                    values_[static_cast<std::size_t>(k)] = *v;
+                else if (const Vec* w = find(partner, ids[i]))
+                    values_[static_cast<std::size_t>(k)] = -*w;
             }
         });
     }

@@ -79,7 +79,7 @@ void DemSystem<Dim>::add_mesh(MeshWall wall) {
 
 template <int Dim>
 void DemSystem<Dim>::gather(const std::vector<Index>& source) {
-    if (!history_saved_) history_.save(grains_.id(), grains_.size(), list_);
+    if (!history_saved_) history_.save(grains_.id(), grains_.size(), pairs_);
     history_saved_ = true;
     grains_.gather(source);  // forces and torques travel with their grains and stay valid
     lists_dirty_ = true;
@@ -95,7 +95,7 @@ double DemSystem<Dim>::skin() const {
 template <int Dim>
 void DemSystem<Dim>::rebuild_neighbors() {
     const Index n = grains_.size();
-    if (!history_saved_) history_.save(grains_.id(), n, list_);
+    if (!history_saved_) history_.save(grains_.id(), n, pairs_);
     history_saved_ = false;
     // Wrap into the periodic box, then sort grains by cell so neighbours are close in memory.
     Vec* x = grains_.position();
@@ -104,6 +104,7 @@ void DemSystem<Dim>::rebuild_neighbors() {
     skin_ = skin();
     if (n == 0) {  // no grains yet (a feed brings them): empty lists, no grid
         list_ = GrainNeighborList<Dim>();
+        cut_pairs();
         scratch_.reset(0);
         lists_dirty_ = false;
         ++counters_.rebuilds;
@@ -115,12 +116,20 @@ void DemSystem<Dim>::rebuild_neighbors() {
     std::vector<Index> cell_start;
     neighbors::sort_by_cell(grid, x, n, order_, cell_start);
     grains_.gather(order_);
-    list_.build(grid, cell_start, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(),
-                grains_.id(), n, skin_);
-    history_.restore(grains_.id(), list_);
-    scratch_.reset(list_.entry_count());
+    list_.build(grid, cell_start, domain, std::as_const(grains_).position(), std::as_const(grains_).radius(), n,
+                skin_);
+    cut_pairs();
+    history_.restore(grains_.id(), pairs_);
+    scratch_.reset(pairs_.upper_size());
     lists_dirty_ = false;
     ++counters_.rebuilds;
+}
+
+template <int Dim>
+void DemSystem<Dim>::cut_pairs() {
+    const Index n = list_.grain_count();
+    one_phase_.assign(static_cast<std::size_t>(n), 0);
+    pairs_.update(list_.offsets(), list_.indices(), n, list_.version(), one_phase_.data(), 0);
 }
 
 template <int Dim>
@@ -144,7 +153,7 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            grain_pair_pass<Dim>(grains_, list_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+            grain_pair_pass<Dim>(grains_, pairs_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
             if constexpr (Dim == 3) {
                 if (meshes_) {
                     meshes_->place(time);
@@ -153,8 +162,8 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
             } else {
                 (void)time;
             }
-            finish_grain_forces<Dim>(grains_, list_, scratch_, parameters_.gravity, walls_, wall_history,
-                                     pair_table_, law, dt, half_kick);
+            finish_grain_forces<Dim>(grains_, parameters_.gravity, walls_, wall_history, pair_table_, law, dt,
+                                     half_kick);
         },
         law_);
     forces_ready_ = true;
@@ -288,6 +297,7 @@ void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     counters_.rebuilds = group.read_int("rebuilds");
     history_.read(group.open_group("contact_history"));
     list_ = GrainNeighborList<Dim>();
+    cut_pairs();
     if (lists_dirty_ || grains_.size() == 0) return;
     std::size_t rows = 0;
     const auto raw = group.read_doubles("list_reference_positions", Dim, rows);
@@ -304,9 +314,9 @@ void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     for (Index i = 0; i < n; ++i)
         if (order_[static_cast<std::size_t>(i)] != i)
             throw io::Hdf5Error(group.path() + ": the grains are not in the order of their neighbour lists");
-    list_.build(grid, cell_start, parameters_.domain, reference.data(), std::as_const(grains_).radius(), grains_.id(),
-                n, skin_);
-    scratch_.reset(list_.entry_count());
+    list_.build(grid, cell_start, parameters_.domain, reference.data(), std::as_const(grains_).radius(), n, skin_);
+    cut_pairs();
+    scratch_.reset(pairs_.upper_size());
 }
 
 template class DemSystem<2>;

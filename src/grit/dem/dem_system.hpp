@@ -18,6 +18,7 @@
 #include "grit/dem/grain_set.hpp"
 #include "grit/dem/mesh_walls.hpp"
 #include "grit/dem/plane_wall.hpp"
+#include "grit/neighbors/half_lists.hpp"
 
 namespace grit::dem {
 
@@ -56,6 +57,9 @@ public:
     double time() const noexcept { return time_; }
     const DemCounters& counters() const noexcept { return counters_; }
     const GrainNeighborList<Dim>& neighbors() const noexcept { return list_; }
+    /// The lists cut into each pair once (partners of higher index): the pairs the contact pass evaluates
+    /// and the entries of contact_history().values().
+    const neighbors::HalfLists& pairs() const noexcept { return pairs_; }
     const ContactHistory<Dim>& contact_history() const noexcept { return history_; }
 
     /// Adds one grain of material `material` (index) and returns its index (valid until the next step,
@@ -115,6 +119,8 @@ private:
     /// `time`: the time of the grains' positions (where moving meshes are placed).
     void force_stage(double dt, double half_kick, double time);
     void rebuild_neighbors();
+    /// Cuts pairs_ from the current lists.
+    void cut_pairs();
     double skin() const;
 
     DemParameters<Dim> parameters_;
@@ -125,6 +131,11 @@ private:
     std::vector<PlaneWall<Dim>> walls_;
     std::unique_ptr<MeshWalls> meshes_;
     GrainNeighborList<Dim> list_;
+    // A 16th of the pairs a block, without upper bound: with the grains in cells of x slowest, a block's
+    // pairs reach a whole slab of cells ahead (its spill), so blocks much larger than a slab pay
+    // (docs/performance.md, "DEM: each pair once by index").
+    neighbors::HalfLists pairs_{neighbors::HalfLists::Blocking{16, 1024, std::int64_t{1} << 40}};
+    std::vector<std::int32_t> one_phase_;  // all grains are one phase for the cut
     ContactHistory<Dim> history_;
     PairScratch<Dim> scratch_;
     std::vector<Index> order_;

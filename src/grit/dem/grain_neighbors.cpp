@@ -6,6 +6,7 @@
 
 #include "grit/core/error.hpp"
 #include "grit/dem/grain_loop.hpp"
+#include "grit/neighbors/neighbor_list.hpp"
 
 namespace grit::dem {
 
@@ -22,8 +23,8 @@ typename GrainNeighborList<Dim>::Grid GrainNeighborList<Dim>::make_grid(const Gr
 
 template <int Dim>
 void GrainNeighborList<Dim>::build(const Grid& grid, const std::vector<Index>& cell_start,
-                                   const GrainDomain<Dim>& domain, const Vec* x, const double* radius,
-                                   const std::int32_t* id, Index n, double skin) {
+                                   const GrainDomain<Dim>& domain, const Vec* x, const double* radius, Index n,
+                                   double skin) {
     skin_ = skin;
     // Visits every grain j != i within R_i + R_j + skin in the 3^Dim cells around i's cell.
     auto scan = [&](Index i, auto&& visit) {
@@ -44,29 +45,13 @@ void GrainNeighborList<Dim>::build(const Grid& grid, const std::vector<Index>& c
     });
     for (Index i = 0; i < n; ++i) offsets_[static_cast<std::size_t>(i) + 1] += offsets_[static_cast<std::size_t>(i)];
     indices_.resize(static_cast<std::size_t>(offsets_.back()));
-    split_.resize(static_cast<std::size_t>(n));
     for_each_grain(n, [&](Index i) {
         Index k = offsets_[static_cast<std::size_t>(i)];
         scan(i, [&](Index j) { indices_[static_cast<std::size_t>(k++)] = j; });
-        // Partners of higher id first (this grain's pairs), then lower; ascending index within each part.
-        const auto row = indices_.begin() + offsets_[static_cast<std::size_t>(i)];
-        std::sort(row, indices_.begin() + k, [&](Index p, Index q) {
-            const bool pa = id[p] > id[i], qa = id[q] > id[i];
-            return pa != qa ? pa : p < q;
-        });
-        split_[static_cast<std::size_t>(i)] = static_cast<Index>(
-            std::partition_point(row, indices_.begin() + k, [&](Index p) { return id[p] > id[i]; }) - indices_.begin());
-    });
-    mirror_.resize(indices_.size());
-    for_each_grain(n, [&](Index i) {
-        for (Index k = offsets_[static_cast<std::size_t>(i)]; k < offsets_[static_cast<std::size_t>(i) + 1]; ++k) {
-            const Index j = indices_[static_cast<std::size_t>(k)];
-            Index m = offsets_[static_cast<std::size_t>(j)];
-            while (indices_[static_cast<std::size_t>(m)] != i) ++m;
-            mirror_[static_cast<std::size_t>(k)] = m;
-        }
+        std::sort(indices_.begin() + offsets_[static_cast<std::size_t>(i)], indices_.begin() + k);
     });
     reference_positions_.assign(x, x + n);
+    version_ = neighbors::next_list_version();
 }
 
 template <int Dim>

@@ -1,6 +1,7 @@
 // Grain neighbour search: a cell grid sized by the largest grain (largest diameter + skin), optional
 // periodic axes, grains sorted by cell, and full Verlet lists in compressed rows (each pair appears in
-// both grains' rows, for gather loops). The lists stay valid until a grain has moved more than skin/2.
+// both grains' rows; the contact pass cuts them into each pair once, neighbors::HalfLists). The lists
+// stay valid until a grain has moved more than skin/2.
 #pragma once
 
 #include <array>
@@ -36,21 +37,19 @@ public:
     static Grid make_grid(const GrainDomain<Dim>& domain, const Vec* x, Index n, double cell_size);
 
     /// Builds the lists of x[0..n), which must be wrapped and sorted by the cells of `grid`, with
-    /// `cell_start` from neighbors::sort_by_cell. Each row lists first the partners with a higher id (the
-    /// pairs this grain evaluates, as body a), then those with a lower id, each part in ascending index
-    /// order.
+    /// `cell_start` from neighbors::sort_by_cell. Each row in ascending index order.
     void build(const Grid& grid, const std::vector<Index>& cell_start, const GrainDomain<Dim>& domain,
-               const Vec* x, const double* radius, const std::int32_t* id, Index n, double skin);
+               const Vec* x, const double* radius, Index n, double skin);
 
     Index begin(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i)]; }
     Index end(Index i) const noexcept { return offsets_[static_cast<std::size_t>(i) + 1]; }
-    /// First entry of i's row whose partner has a lower id: [begin, split) are i's pairs as body a.
-    Index split(Index i) const noexcept { return split_[static_cast<std::size_t>(i)]; }
+    /// Row starts, n + 1 of them (for neighbors::HalfLists).
+    const Index* offsets() const noexcept { return offsets_.data(); }
     const Index* indices() const noexcept { return indices_.data(); }
-    /// For entry k = (i, j): the entry (j, i) in j's row, so a pair evaluated once can be read by both.
-    const Index* mirrors() const noexcept { return mirror_.data(); }
     Index grain_count() const noexcept { return static_cast<Index>(offsets_.size()) - 1; }
     std::size_t entry_count() const noexcept { return indices_.size(); }
+    /// Changes with every build, and is never the same for two lists (for neighbors::HalfLists::update).
+    std::uint64_t version() const noexcept { return version_; }
 
     /// True when a grain has moved more than skin/2 since the build, or the count has changed.
     bool stale(const Vec* x, Index n) const;
@@ -64,9 +63,8 @@ public:
 private:
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;
-    std::vector<Index> mirror_;
-    std::vector<Index> split_;
     std::vector<Vec> reference_positions_;
+    std::uint64_t version_ = 0;
     double skin_ = 0.0;
 };
 

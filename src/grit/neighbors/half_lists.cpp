@@ -52,8 +52,9 @@ void HalfLists::update(const Index* offsets, const Index* indices, Index n, std:
     // Blocks of about block_pairs pairs (both kinds: both cost a pair evaluation), each spilling to the
     // particles of higher index its same-phase pairs reach.
     const std::int64_t block_pairs = std::clamp<std::int64_t>(
-        (static_cast<std::int64_t>(upper_.size()) + static_cast<std::int64_t>(other_.size())) / blocks_target,
-        min_block_pairs, max_block_pairs);
+        (static_cast<std::int64_t>(upper_.size()) + static_cast<std::int64_t>(other_.size())) /
+            blocking_.blocks_target,
+        blocking_.min_block_pairs, blocking_.max_block_pairs);
     block_begin_.assign(1, 0);
     spill_end_.clear();
     std::int64_t work = 0;

@@ -60,12 +60,21 @@ class HalfLists {
     /// The first block whose spill reaches into block j (j itself when none does).
     Index first_spiller(Index j) const noexcept { return first_spiller_[static_cast<std::size_t>(j)]; }
 
-    /// A block's pairs (both kinds): a 64th of all, within these bounds. Enough blocks for the threads to
-    /// share a small set (an AWJ's water is a few thousand pairs), few enough that a block's spill (a cell
-    /// row or two ahead) stays small beside it. Set by the lists alone, never by the thread count.
-    static constexpr std::int64_t blocks_target = 64, min_block_pairs = 1024, max_block_pairs = 16384;
+    /// How the particles are cut into blocks: a block's pairs (both kinds) are a `blocks_target`-th of
+    /// all, within [min_block_pairs, max_block_pairs]. Set by the lists alone, never by the thread count.
+    struct Blocking {
+        std::int64_t blocks_target, min_block_pairs, max_block_pairs;
+    };
+    /// The SPH sums' blocks: a 64th of all pairs, 1024 to 16384. Enough blocks for the threads to share a
+    /// small set (an AWJ's water is a few thousand pairs), few enough that a block's spill (a cell row or
+    /// two ahead in 2D) stays small beside it.
+    static constexpr Blocking sph_blocking{64, 1024, 16384};
+
+    HalfLists() = default;
+    explicit HalfLists(Blocking blocking) : blocking_(blocking) {}
 
   private:
+    Blocking blocking_ = sph_blocking;
     long cuts_ = 0;
     std::uint64_t version_ = 0;
     Index n_ = 0;

@@ -11,8 +11,9 @@ namespace grit::neighbors {
 
 namespace {
 std::atomic<std::uint64_t> last_version{0};  // shared by all lists, so no two lists have one version
-std::uint64_t next_version() { return ++last_version; }
 }  // namespace
+
+std::uint64_t next_list_version() { return ++last_version; }
 
 template <int Dim>
 template <class Image, class F>
@@ -113,7 +114,7 @@ void NeighborList<Dim>::build(const CellGrid<Dim>& grid, const std::vector<Index
                   indices_.begin() + offsets_[static_cast<std::size_t>(chunk_begin[c])]);
     }
     reference_positions_.assign(x, x + n);
-    version_ = next_version();
+    version_ = next_list_version();
 }
 
 template <int Dim>
@@ -143,7 +144,7 @@ void NeighborList<Dim>::compact(const std::vector<Index>& keep) {
     offsets_ = std::move(offsets);
     indices_ = std::move(indices);
     reference_positions_ = std::move(reference);
-    version_ = next_version();
+    version_ = next_list_version();
 }
 
 template <int Dim>
@@ -152,7 +153,7 @@ void NeighborList<Dim>::assign(std::vector<Index> offsets, std::vector<Index> in
     offsets_ = std::move(offsets);
     indices_ = std::move(indices);
     reference_positions_ = std::move(reference_positions);
-    version_ = next_version();
+    version_ = next_list_version();
 }
 
 template <int Dim>

@@ -31,6 +31,10 @@ struct SideSeparation {
     }
 };
 
+/// A new list version, never handed out before (process-wide): for every kind of list whose cuts
+/// (HalfLists) are redone only when the version changes.
+std::uint64_t next_list_version();
+
 template <int Dim>
 class NeighborList {
 public:

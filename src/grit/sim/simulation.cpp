@@ -47,7 +47,9 @@ bool has_fluid(const io::CaseSpec& spec) {
 
 using core::to_vec;
 
-constexpr std::int64_t checkpoint_format_version = 1;
+// 2: grain-grain contact histories are held by the grain of lower index (was: lower id), one entry per
+// pair of the cut lists (dem::ContactHistory).
+constexpr std::int64_t checkpoint_format_version = 2;
 
 const char* phase_name(std::int32_t p) {
     switch (static_cast<Phase>(p)) {
