@@ -137,7 +137,7 @@ void SolidModule<Dim>::update_stress() {
         const auto id = static_cast<std::int32_t>(m);
         std::visit(
             [&](const auto& model) {
-                parallel::for_each(ps.size(), [&](Index i) {
+                parallel::for_each_dynamic(ps.size(), [&](Index i) {
                     if (ph[i] != solid || mat[i] != id) return;
                     material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
                     const double damage_before = damage[i], vm_before = vm[i];

@@ -60,7 +60,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
     // Read for every neighbour, so written for every particle (0 for fluid and walls).
     work.has_artificial_stress.resize(static_cast<std::size_t>(n));
     std::uint8_t* has_art = work.has_artificial_stress.data();
-    parallel::for_each(n, [&](Index i) {
+    parallel::for_each_dynamic(n, [&](Index i) {
         has_art[i] = 0;
         if (phase[i] != solid) return;
         const SymTensor3 art = eps_as > 0.0 ? artificial_stress(tau[i] - SymTensor3::identity() * p[i], rho[i],
