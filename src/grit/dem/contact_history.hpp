@@ -60,22 +60,26 @@ public:
     void restore(const std::int32_t* ids, const neighbors::HalfLists& pairs) {
         values_.assign(pairs.upper_size(), Vec::zero());
         if (saved_rows_.empty()) return;
-        // The saved value of the pair (owner, partner) as seen from owner, if there is one.
-        auto find = [&](std::int32_t owner, std::int32_t partner) -> const Vec* {
+        // The saved row of grain `owner` (null if it holds none), and the value of its pair with `partner`.
+        auto row_of = [&](std::int32_t owner) -> const SavedRow* {
             const auto row = std::lower_bound(saved_rows_.begin(), saved_rows_.end(), owner,
                                               [](const SavedRow& r, std::int32_t id) { return r.owner < id; });
-            if (row == saved_rows_.end() || row->owner != owner) return nullptr;
+            return row == saved_rows_.end() || row->owner != owner ? nullptr : &*row;
+        };
+        auto find = [&](const SavedRow* row, std::int32_t partner) -> const Vec* {
+            if (!row) return nullptr;
             for (Index s = row->first; s < row->last; ++s)
                 if (saved_partner_[static_cast<std::size_t>(s)] == partner)
                     return &saved_value_[static_cast<std::size_t>(s)];
             return nullptr;
         };
         for_each_grain(pairs.particle_count(), [&](Index i) {
+            const SavedRow* own = row_of(ids[i]);
             for (Index k = pairs.upper_begin(i); k < pairs.upper_end(i); ++k) {
                 const std::int32_t partner = ids[pairs.upper()[k]];
-                if (const Vec* v = find(ids[i], partner))
+                if (const Vec* v = find(own, partner))
                     values_[static_cast<std::size_t>(k)] = *v;
-                else if (const Vec* w = find(partner, ids[i]))
+                else if (const Vec* w = find(row_of(partner), ids[i]))
                     values_[static_cast<std::size_t>(k)] = -*w;
             }
         });

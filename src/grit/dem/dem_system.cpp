@@ -127,9 +127,7 @@ void DemSystem<Dim>::rebuild_neighbors() {
 
 template <int Dim>
 void DemSystem<Dim>::cut_pairs() {
-    const Index n = list_.grain_count();
-    one_phase_.assign(static_cast<std::size_t>(n), 0);
-    pairs_.update(list_.offsets(), list_.indices(), n, list_.version(), one_phase_.data(), 0);
+    pairs_.update(list_.offsets(), list_.indices(), list_.grain_count(), list_.version());
 }
 
 template <int Dim>

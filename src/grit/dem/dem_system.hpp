@@ -135,7 +135,6 @@ private:
     // pairs reach a whole slab of cells ahead (its spill), so blocks much larger than a slab pay
     // (docs/performance.md, "DEM: each pair once by index").
     neighbors::HalfLists pairs_{neighbors::HalfLists::Blocking{16, 1024, std::int64_t{1} << 40}};
-    std::vector<std::int32_t> one_phase_;  // all grains are one phase for the cut
     ContactHistory<Dim> history_;
     PairScratch<Dim> scratch_;
     std::vector<Index> order_;

@@ -91,4 +91,9 @@ void HalfLists::update(const Index* offsets, const Index* indices, Index n, std:
     }
 }
 
+void HalfLists::update(const Index* offsets, const Index* indices, Index n, std::uint64_t version) {
+    one_phase_.assign(static_cast<std::size_t>(n), 0);
+    update(offsets, indices, n, version, one_phase_.data(), 0);
+}
+
 }  // namespace grit::neighbors

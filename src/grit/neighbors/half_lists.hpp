@@ -29,6 +29,8 @@ class HalfLists {
     /// version `version` (NeighborList::version()): unchanged lists, phases and phase are not cut again.
     void update(const Index* offsets, const Index* indices, Index n, std::uint64_t version, const std::int32_t* phase,
                 std::int32_t own_phase);
+    /// The same for lists whose particles are all of one phase (the grains): no neighbours of other phases.
+    void update(const Index* offsets, const Index* indices, Index n, std::uint64_t version);
 
     /// Same-phase neighbours of higher index of particle a: upper()[upper_begin(a) .. upper_end(a)).
     Index upper_begin(Index a) const noexcept { return upper_offsets_[static_cast<std::size_t>(a)]; }
@@ -80,6 +82,7 @@ class HalfLists {
     Index n_ = 0;
     std::int32_t own_phase_ = -1;
     std::vector<std::int32_t> phase_;  // the phases the lists were cut with
+    std::vector<std::int32_t> one_phase_;  // phase 0 for every particle, for the one-phase update
     std::vector<Index> upper_offsets_{0}, upper_, other_offsets_{0}, other_;
     Index longest_upper_ = 0;
     std::vector<Index> block_begin_{0}, spill_end_, first_spiller_;
