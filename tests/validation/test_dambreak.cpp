@@ -48,31 +48,27 @@ TEST(DamBreak, Front2DAgainstMartinMoyce) {
     EXPECT_GE(checked, 3);
 }
 
-TEST(DamBreak, Front3DAgreesWith2D) {
-    const std::vector<double> times = {0.10, 0.15, 0.20, 0.25};
+// The 3D dam break (cases/dambreak_3d) against the 2D case at the same spacing (fronts within 10 %), and
+// the same column in a tank of wall particles laid along a closed STL box (cases/dambreak_mesh_3d) against
+// the particle tank (fronts within 5 %, issue 13). One test, so CI runs the 3D particle tank once. To
+// 0.25 s the two tanks' fronts agree to 0.1 mm (docs/validation.md); the STL tank stops at 0.1 s to
+// spare CI.
+TEST(DamBreak, Front3DAgreesWith2DAndWithAnStlTank) {
     grit::sim::Simulation<2> two(load_case("dambreak_2d/case.toml", {"numerics.particle_spacing=0.01"}), in_memory());
     grit::sim::Simulation<3> three(load_case("dambreak_3d/case.toml"), in_memory());
-    for (double t : times) {
+    grit::sim::Simulation<3> mesh(load_case("dambreak_mesh_3d/case.toml"), in_memory());
+    for (double t : {0.05, 0.10}) {
+        three.advance_to(t);
+        mesh.advance_to(t);
+        const double a = three.probe("front"), b = mesh.probe("front");
+        std::printf("t = %.2f  front particle tank = %.4f m  STL tank = %.4f m\n", t, a, b);
+        EXPECT_NEAR(b, a, 0.05 * a) << "t = " << t;
+    }
+    for (double t : {0.10, 0.15, 0.20, 0.25}) {
         two.advance_to(t);
         three.advance_to(t);
         const double f2 = two.probe("front"), f3 = three.probe("front");
         std::printf("t = %.2f  front 2D = %.4f m  3D = %.4f m\n", t, f2, f3);
         EXPECT_NEAR(f3, f2, 0.10 * f2) << "t = " << t;
-    }
-}
-
-// The 3D dam break in a tank of wall particles laid along a closed STL box (cases/dambreak_mesh_3d)
-// against the same column in the particle tank (cases/dambreak_3d): the surge front within 5 % (issue 13).
-// To 0.25 s the two fronts agree to 0.1 mm (docs/validation.md); the test stops at 0.1 s to spare CI.
-TEST(DamBreak, FrontInAnStlTankAgreesWithTheParticleTank) {
-    const std::vector<double> times = {0.05, 0.10};
-    grit::sim::Simulation<3> particles(load_case("dambreak_3d/case.toml"), in_memory());
-    grit::sim::Simulation<3> mesh(load_case("dambreak_mesh_3d/case.toml"), in_memory());
-    for (double t : times) {
-        particles.advance_to(t);
-        mesh.advance_to(t);
-        const double a = particles.probe("front"), b = mesh.probe("front");
-        std::printf("t = %.2f  front particle tank = %.4f m  STL tank = %.4f m\n", t, a, b);
-        EXPECT_NEAR(b, a, 0.05 * a) << "t = " << t;
     }
 }
