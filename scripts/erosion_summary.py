@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """How a specimen lost its mass, from a run's eroded.csv (one row per removed solid particle): the
 removals by cause and by time window, and the state the particles failed in (median and range of the
-plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface).
+plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface),
+and how much the removals cluster: how many follow an earlier removal within --radius and --window,
+against how many would if the same removals were independent in time (a chain of failures, each
+starting the next, would show as many more, and within a microsecond).
 
-  python3 scripts/erosion_summary.py output/awj_copper_2d [--bins 4] [--surface 0.0]
+  python3 scripts/erosion_summary.py output/awj_copper_2d [--bins 4] [--surface 0.0] [--radius 2e-4] [--window 2e-5]
 
 --surface: the specimen's initial top (y in 2D, z in 3D) for the depth column; 0 by default, as in the
 AWJ cases. Uses the standard library only.
@@ -41,11 +44,33 @@ def describe(rows):
     return lines
 
 
+def clustering(rows, radius, window):
+    """Lines on how the removals cluster in space and time (docs/validation.md, "Not a cascade")."""
+    axes = [a for a in ("x", "y", "z") if a in rows[0]]
+    points = sorted(((float(r["time"]), [float(r[a]) for a in axes]) for r in rows), key=lambda p: p[0])
+    near = lambda p, q: math.dist(p[1], q[1]) < radius
+    n = len(points)
+    pairs = n * (n - 1) // 2
+    close_share = sum(near(points[i], points[j]) for i in range(n) for j in range(i)) / pairs if pairs else 0.0
+    following, within_1us, expected = 0, 0, 0.0
+    for i, (t, _) in enumerate(points):
+        earlier = [q for q in points[:i] if t - q[0] <= window]
+        gaps = [t - q[0] for q in earlier if near(points[i], q)]
+        following += bool(gaps)
+        within_1us += any(g <= 1e-6 for g in gaps)
+        expected += 1.0 - (1.0 - close_share) ** len(earlier)  # the same number of earlier ones, anywhere
+    return [f"clustering: {following} of {n} removals follow an earlier one within {radius * 1e3:g} mm and "
+            f"{window * 1e6:g} us ({expected:.1f} would at random: {100 * close_share:.0f} % of all pairs lie that "
+            f"close), {within_1us} within 1 us"]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run", help="a run's output folder (holding eroded.csv)")
     parser.add_argument("--bins", type=int, default=4, help="time windows to count the removals in")
     parser.add_argument("--surface", type=float, default=0.0, help="the specimen's initial top [m]")
+    parser.add_argument("--radius", type=float, default=2e-4, help="clustering: distance to an earlier removal [m]")
+    parser.add_argument("--window", type=float, default=2e-5, help="clustering: time since an earlier removal [s]")
     args = parser.parse_args()
     path = pathlib.Path(args.run) / "eroded.csv"
     if not path.is_file():
@@ -72,6 +97,7 @@ def main():
         part = [r for r in rows if lo < float(r["time"]) <= hi or (k == 0 and float(r["time"]) == 0.0)]
         print(f"  {lo * 1e3:8.4f} - {hi * 1e3:8.4f} ms: {len(part):5d} particles, "
               f"{sum(float(r['mass']) for r in part):.4g} kg")
+    print("\n".join(clustering(rows, args.radius, args.window)))
 
 
 if __name__ == "__main__":
