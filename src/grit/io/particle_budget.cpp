@@ -45,12 +45,15 @@ double ball_bound(double r, int dim, double dx) {
 
 /// Upper bound of the particles a jet inlet emits by time `end`: layers of diameter/dx points (2D) or
 /// (diameter/dx)^2 (3D, the square around the disc), one at the start and one per dx the jet advances.
-double inlet_bound(const InletSpec& in, int dim, double dx, double end) {
+/// With `reach`, at most the layers within that distance of the nozzle: those still in the domain when
+/// the particles that crossed `reach` have left.
+double inlet_bound(const InletSpec& in, int dim, double dx, double end,
+                   double reach = std::numeric_limits<double>::infinity()) {
     const double duration = std::min(in.stop, end) - in.start;
     if (!(duration > 0.0)) return 0.0;
     const double across = points_along(in.diameter, dx);
     const double per_layer = dim == 2 ? across : across * across;
-    const double layers = 1.0 + std::floor(in.velocity * duration / dx);
+    const double layers = 1.0 + std::floor(std::min(in.velocity * duration, reach) / dx);
     return per_layer * layers;
 }
 
@@ -116,6 +119,14 @@ double domain_particle_room(const CaseSpec& c) {
     return room;
 }
 
+double domain_diagonal(const CaseSpec& c) {
+    if (c.domain_min.size() < static_cast<std::size_t>(c.dimension)) return std::numeric_limits<double>::infinity();
+    double d2 = 0.0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(c.dimension); ++k)
+        d2 += (c.domain_max[k] - c.domain_min[k]) * (c.domain_max[k] - c.domain_min[k]);
+    return std::sqrt(d2);
+}
+
 double domain_grain_room(const CaseSpec& c, double d) {
     if (c.domain_min.size() < static_cast<std::size_t>(c.dimension) || !(d > 0.0))
         return std::numeric_limits<double>::infinity();
@@ -133,11 +144,22 @@ ParticleEstimate estimate_particles(const CaseSpec& c) {
     for (const auto* list : {&c.fluids, &c.solids, &c.walls})
         for (const auto& b : *list)
             blocks += shape_particle_bound(b.shape, dim, dx);
-    for (const auto& in : c.inlets) e.inlets += inlet_bound(in, dim, dx, c.end_time);
+    // Outlets drain what the inlets emit: a jet's water crosses the domain and leaves, so at a time the
+    // domain holds about what enters while a particle crosses its diagonal (a run's own count is lower:
+    // the water leaves by the nearest outlet, not along the diagonal).
+    const bool drained = !c.outlets.empty();
+    const double diagonal = domain_diagonal(c);
+    double crossing = 0.0;
+    for (const auto& in : c.inlets) {
+        e.inlets += inlet_bound(in, dim, dx, c.end_time);
+        crossing += inlet_bound(in, dim, dx, c.end_time, diagonal);
+    }
     e.inlets_held = std::min(e.inlets, std::max(0.0, domain_particle_room(c) - blocks));
+    e.inlets_in_flight = drained ? std::min(e.inlets_held, crossing) : e.inlets_held;
     e.sph = blocks + e.inlets_held;
 
     double placed = 0.0, smallest = std::numeric_limits<double>::infinity();
+    double abrasive_fed = 0.0, abrasive_in_flight = 0.0;
     for (const auto& g : c.grains) {
         placed += grain_count(g, dim);
         smallest = std::min(smallest, dem::smallest_diameter(g.size));
@@ -146,7 +168,12 @@ ParticleEstimate estimate_particles(const CaseSpec& c) {
         // One grain per column of the jet that enters by time.end (and one that joins ahead of it).
         const auto& jet = c.inlets[static_cast<std::size_t>(c.abrasive.inlet)];
         const double duration = std::min(c.abrasive.stop, c.end_time) - c.abrasive.start;
-        if (duration > 0.0) e.grains_fed += 2.0 + std::floor(jet.velocity * duration / c.abrasive.spacing);
+        if (duration > 0.0) {
+            const double fed = 2.0 + std::floor(jet.velocity * duration / c.abrasive.spacing);
+            e.grains_fed += fed;
+            abrasive_fed = fed;
+            abrasive_in_flight = drained ? std::min(fed, 2.0 + std::floor(diagonal / c.abrasive.spacing)) : fed;
+        }
         smallest = std::min(smallest, dem::smallest_diameter(c.abrasive.size));
     }
     for (const auto& f : c.grain_feeds) {
@@ -165,6 +192,7 @@ ParticleEstimate estimate_particles(const CaseSpec& c) {
     }
     e.grains = placed + e.grains_fed;
     if (e.grains_fed > 0.0) e.grains = std::min(e.grains, std::max(placed, domain_grain_room(c, smallest)));
+    e.grains_in_flight = std::min(e.grains, placed + (e.grains_fed - abrasive_fed) + abrasive_in_flight);
     e.bytes = e.sph * (dim == 2 ? sph_bytes_2d : sph_bytes_3d) + e.grains * grain_bytes;
     return e;
 }

@@ -15,6 +15,12 @@ struct ParticleEstimate {
     double inlets_held = 0.0;  ///< the most of `inlets` in the domain at once (its room the blocks leave)
     double grains_fed = 0.0;   ///< every grain the abrasive and the grain feeds insert by time.end
     double grains = 0.0;       ///< DEM grains at once: the blocks' plus `grains_fed`, at most the domain's room
+    /// What a run holds at a time, for the time estimate rather than the memory bound: where outlets drain
+    /// the domain, an inlet holds about what it emits while a particle crosses the domain's diagonal at its
+    /// speed, and the abrasive one grain per `abrasive.spacing` of that diagonal; without outlets, or
+    /// without a domain box, `inlets_held` and `grains`.
+    double inlets_in_flight = 0.0;
+    double grains_in_flight = 0.0;
     double bytes = 0.0;        ///< memory of both, fields and neighbour lists (an estimate, see the .cpp)
     double total() const { return sph + grains; }
 };
@@ -23,6 +29,9 @@ struct ParticleEstimate {
 /// a jet's impact holds a little more). What inlets emit beyond it has left through outlets or the
 /// domain's faces: a jet run for milliseconds holds a few thousand particles, not the millions it emits.
 double domain_particle_room(const CaseSpec& c);
+
+/// Length of the domain box's diagonal [m]; infinity without a domain box.
+double domain_diagonal(const CaseSpec& c);
 
 /// Room for grains of diameter d in the domain box: its volume over d^Dim, times 1.5 (above the densest
 /// packing of discs, 1.155, and of spheres, 1.414).

@@ -49,11 +49,12 @@ RunEstimate estimate_run(const io::CaseSpec& spec, const State<Dim>& state) {
     const double remaining = std::max(0.0, spec.end_time - state.clock.time);
     const double dt = state.clock.dt_stable > 0.0 ? state.clock.dt_stable : state.clock.dt;
     e.steps = dt > 0.0 ? std::ceil(remaining / dt) : 0.0;
-    // What exists now and the most the inlets add at once (the budget's count: what they emit by time.end,
-    // at most the domain's room; the rest has left through the outlets).
+    // What exists now and what the inlets add at a time (the budget's in-flight count: with outlets, what
+    // enters while a particle crosses the domain; without, what they emit by time.end, at most the room).
     const auto budget = io::estimate_particles(spec);
     const double grains = state.grains ? static_cast<double>(state.grains->grains().size()) : 0.0;
-    e.particles = static_cast<double>(state.particles.size()) + budget.inlets_held + std::max(grains, budget.grains);
+    e.particles =
+        static_cast<double>(state.particles.size()) + budget.inlets_in_flight + std::max(grains, budget.grains_in_flight);
     e.outputs = std::floor(remaining / spec.output_interval + 1e-9) + 1.0;
     double bytes_per_particle = 0.0;  // the snapshot's columns, as they are held in memory
     const auto n = static_cast<double>(state.particles.size());

@@ -13,7 +13,7 @@ namespace grit::sim {
 struct RunEstimate {
     double steps = 0.0;            ///< time.end / the first stable step (the step changes during a run)
     double particles = 0.0;        ///< SPH particles and grains at once: those at the start and what the
-                                   ///< inlets and feeds add, at most the domain's room (io::estimate_particles)
+                                   ///< inlets and feeds add at a time (io::ParticleEstimate's in-flight counts)
     double outputs = 0.0;          ///< output times: time.end / output.interval + 1
     double snapshot_bytes = 0.0;   ///< all snapshots together [B] (at the largest particle count)
     double wall_seconds = 0.0;     ///< at `rate` particle-steps per second
