@@ -27,15 +27,15 @@ test: build
 test-long: build
 	GRIT_LONG_TESTS=1 ctest --test-dir $(BUILD) --output-on-failure -j 1 $(CTEST_ARGS)
 
-# Unit tests, and the short whole-case tests (conservation, thread determinism of every case), under
-# AddressSanitizer and UndefinedBehaviorSanitizer.
+# Unit tests, and the short whole-case tests (conservation, a checkpoint and restart of every case, the
+# grains on a mesh wall and on a copper plate), under AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests grit_case_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j 1 -R '^(Conservation\.|CouplingConservation\.(FreeBlob|PeriodicBox)WithGrainsMomentum2D|PackedBed\.|Determinism\.|GrainImpact\.Momentum)'
+	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j 1 -R '^(Conservation\.|CouplingConservation\.(FreeBlob|PeriodicBox)WithGrainsMomentum2D|PackedBed\.|Restart\.EveryCase|Determinism\.(GrainsOnAMeshWall|PeriodicChannel)|GrainImpact\.Momentum)'
 
 demo: build
 	./$(BUILD)/grit run cases/demo.toml --out output/demo
