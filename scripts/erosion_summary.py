@@ -3,13 +3,13 @@
 removals by cause and by time window, and the state the particles failed in (median and range of the
 plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface),
 and how much the removals cluster: how many follow an earlier removal within --radius and --window,
-against how many would if the same removals were independent in time (a chain of failures, each
-starting the next, would show as many more, and within a microsecond).
+against how many would if the same removals, at the same times, lay at random places (a chain of
+failures, each starting the next, would show many more, and within a microsecond).
 
   python3 scripts/erosion_summary.py output/awj_copper_2d [--bins 4] [--surface 0.0] [--radius 2e-4] [--window 2e-5]
 
 --surface: the specimen's initial top (y in 2D, z in 3D) for the depth column; 0 by default, as in the
-AWJ cases. Uses the standard library only.
+AWJ cases. Uses the standard library, and numpy (Debian's python3-numpy) for the clustering.
 """
 import argparse
 import csv
@@ -17,6 +17,8 @@ import math
 import pathlib
 import statistics
 import sys
+
+from debian_python import require_numpy_and_matplotlib
 
 
 def quantiles(values):
@@ -46,25 +48,30 @@ def describe(rows):
 
 def clustering(rows, radius, window):
     """Lines on how the removals cluster in space and time (docs/validation.md, "Not a cascade")."""
+    import numpy as np  # the all-pairs count is O(n^2): in numpy, not in Python loops
+
     axes = [a for a in ("x", "y", "z") if a in rows[0]]
-    points = sorted(((float(r["time"]), [float(r[a]) for a in axes]) for r in rows), key=lambda p: p[0])
-    near = lambda p, q: math.dist(p[1], q[1]) < radius
-    n = len(points)
-    pairs = n * (n - 1) // 2
-    close_share = sum(near(points[i], points[j]) for i in range(n) for j in range(i)) / pairs if pairs else 0.0
+    order = sorted(range(len(rows)), key=lambda i: float(rows[i]["time"]))
+    t = np.array([float(rows[i]["time"]) for i in order])
+    x = np.array([[float(rows[i][a]) for a in axes] for i in order])
+    n = len(t)
+    close_pairs = sum(int(np.count_nonzero(np.linalg.norm(x[:i] - x[i], axis=1) < radius)) for i in range(1, n))
+    close_share = close_pairs / (n * (n - 1) // 2) if n > 1 else 0.0
     following, within_1us, expected = 0, 0, 0.0
-    for i, (t, _) in enumerate(points):
-        earlier = [q for q in points[:i] if t - q[0] <= window]
-        gaps = [t - q[0] for q in earlier if near(points[i], q)]
-        following += bool(gaps)
-        within_1us += any(g <= 1e-6 for g in gaps)
-        expected += 1.0 - (1.0 - close_share) ** len(earlier)  # the same number of earlier ones, anywhere
+    for i in range(n):
+        first = int(np.searchsorted(t, t[i] - window, side="left"))  # earlier removals within the window
+        near = np.linalg.norm(x[first:i] - x[i], axis=1) < radius
+        gaps = t[i] - t[first:i][near]
+        following += gaps.size > 0
+        within_1us += bool(np.any(gaps <= 1e-6))
+        expected += 1.0 - (1.0 - close_share) ** (i - first)  # as many earlier ones, at random places
     return [f"clustering: {following} of {n} removals follow an earlier one within {radius * 1e3:g} mm and "
-            f"{window * 1e6:g} us ({expected:.1f} would at random: {100 * close_share:.0f} % of all pairs lie that "
-            f"close), {within_1us} within 1 us"]
+            f"{window * 1e6:g} us ({expected:.1f} would at random places: {100 * close_share:.0f} % of all pairs "
+            f"lie that close), {within_1us} within 1 us"]
 
 
 def main():
+    require_numpy_and_matplotlib()  # with Debian's python3 if this one lacks numpy
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run", help="a run's output folder (holding eroded.csv)")
     parser.add_argument("--bins", type=int, default=4, help="time windows to count the removals in")
