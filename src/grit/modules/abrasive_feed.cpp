@@ -33,7 +33,7 @@ void AbrasiveFeedModule<Dim>::output_values(std::vector<sim::OutputValue>& out) 
 }
 
 template <int Dim>
-void AbrasiveFeedModule<Dim>::save(io::Hdf5Group& group) {
+void AbrasiveFeedModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("next_column", inlet_.next_column());
     group.write("injected", injected_);
 }

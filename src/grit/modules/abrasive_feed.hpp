@@ -20,7 +20,7 @@ public:
     /// grains_injected; abrasive_mass_flow_rate, abrasive_spacing and abrasive_volume_fraction (summary).
     void output_values(std::vector<sim::OutputValue>& out) const override;
     /// The next column's index (the draws are keyed by column) and the count injected.
-    void save(io::Hdf5Group& group) override;
+    void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
 private:

@@ -97,7 +97,7 @@ void GrainFeedModule<Dim>::output_values(std::vector<sim::OutputValue>& out) con
 }
 
 template <int Dim>
-void GrainFeedModule<Dim>::save(io::Hdf5Group& group) {
+void GrainFeedModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("next", next_.data(), next_.size(), 1);
     group.write("carried", carried_.data(), carried_.size(), 1);
     group.write("fed", fed_.data(), fed_.size(), 1);

@@ -19,7 +19,7 @@ class GrainFeedModule final : public sim::Module<Dim> {
     void install(sim::Pipeline& pipeline) override;
     /// grains_fed, and grains_not_placed (summary) when a box was too full to take a grain.
     void output_values(std::vector<sim::OutputValue>& out) const override;
-    void save(io::Hdf5Group& group) override;
+    void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
   private:

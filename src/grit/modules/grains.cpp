@@ -213,7 +213,7 @@ void GrainsModule<Dim>::write_output(const sim::OutputPlace& place) {
 }
 
 template <int Dim>
-void GrainsModule<Dim>::save(io::Hdf5Group& group) {
+void GrainsModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
     group.write("grains_out", grains_out_);
     group.write("grain_mass_out", grain_mass_out_);

@@ -139,7 +139,7 @@ void MeshWearModule<Dim>::write_output(const sim::OutputPlace& place) {
 }
 
 template <int Dim>
-void MeshWearModule<Dim>::save(io::Hdf5Group& group) {
+void MeshWearModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
     auto map = group.create_group("wear_map");
     map_.save(map);

@@ -24,7 +24,7 @@ class MeshWearModule final : public sim::Module<Dim> {
     void output_values(std::vector<sim::OutputValue>& out) const override;
     void open_output(const sim::OutputPlace& place, bool restart) override;
     void write_output(const sim::OutputPlace& place) override;
-    void save(io::Hdf5Group& group) override;
+    void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
     const wear::WearMap& wear_map() const noexcept { return map_; }

@@ -92,7 +92,7 @@ void OpenBoundariesModule<Dim>::apply() {
 }
 
 template <int Dim>
-void OpenBoundariesModule<Dim>::save(io::Hdf5Group& group) {
+void OpenBoundariesModule<Dim>::save(io::Hdf5Group& group) const {
     std::vector<double> travelled;
     for (const auto& in : inlets_) travelled.push_back(in.travelled());
     group.write("inlet_travelled", travelled.data(), travelled.size(), 1);

@@ -20,7 +20,7 @@ public:
     void initialise() override;
     void install(sim::Pipeline& pipeline) override;
     /// Each inlet's progress (the distance its last layer has moved).
-    void save(io::Hdf5Group& group) override;
+    void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
 private:

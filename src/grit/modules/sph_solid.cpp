@@ -289,8 +289,12 @@ void SolidModule<Dim>::write_output(const sim::OutputPlace& /*place*/) {
 }
 
 template <int Dim>
-void SolidModule<Dim>::save(io::Hdf5Group& group) {
+void SolidModule<Dim>::flush_logs() {
     erosion_log_.flush();
+}
+
+template <int Dim>
+void SolidModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("eroded_particles", static_cast<std::int64_t>(erosion_log_.total()));
 }
 

@@ -25,7 +25,8 @@ public:
     /// eroded.csv: every removed solid particle (analysis/erosion_log.hpp).
     void open_output(const sim::OutputPlace& place, bool restart) override;
     void write_output(const sim::OutputPlace& place) override;
-    void save(io::Hdf5Group& group) override;
+    void flush_logs() override;
+    void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
 private:

@@ -101,8 +101,12 @@ public:
     virtual void open_output(const OutputPlace& /*place*/, bool /*restart*/) {}
     virtual void write_output(const OutputPlace& /*place*/) {}
 
+    /// Writes the records its log files (eroded.csv, ...) still buffer: called before a checkpoint
+    /// records how many rows they hold. Touches the files only, never the run.
+    virtual void flush_logs() {}
     /// What the module holds beyond the State (inlet progress, output counters), for a checkpoint.
-    virtual void save(io::Hdf5Group& /*group*/) {}
+    /// const: writing a checkpoint cannot change the run it is taken from.
+    virtual void save(io::Hdf5Group& /*group*/) const {}
     virtual void load(const io::Hdf5Group& /*group*/) {}
 };
 

@@ -21,8 +21,7 @@ void ImpactLog::flush() {
     file_.flush();
 }
 
-void ImpactLog::save(io::Hdf5Group& group) {
-    flush();
+void ImpactLog::save(io::Hdf5Group& group) const {
     group.write("impacts", static_cast<std::int64_t>(total()));
     group.write("first_speed", first_speed_);
 }

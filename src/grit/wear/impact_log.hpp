@@ -43,8 +43,8 @@ public:
     /// Appends the records not yet written.
     void flush();
 
-    /// For a checkpoint: the number of impacts so far (all written by flush() first).
-    void save(io::Hdf5Group& group);
+    /// For a checkpoint: the number of impacts so far (flush() first, so that the file holds them all).
+    void save(io::Hdf5Group& group) const;
     void load(const io::Hdf5Group& group);
 
 private:
