@@ -121,13 +121,16 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
 // The same sums with each fluid-fluid pair evaluated once (neighbors::sum_pairs_once): the pair's terms
 // go to a with m_b, V_b and to b with -m_a, V_a (momentum and mass conserved pair by pair); the pairs
 // with walls and solids are one-sided, as in the gather loop. Without the kernel-gradient correction
-// only: with it, a pair's two gradients differ (L_a grad W, L_b grad W).
-template <int Dim, class K, bool Porous, class Image>
+// only: with it, a pair's two gradients differ (L_a grad W, L_b grad W). OneMaterial: every fluid particle
+// has one material (the common case); a pair's coefficients are then a's, and the means of eqs. (25)-(27)
+// are the same numbers (0.5 (c + c) = c exactly), so they are not gathered.
+template <int Dim, class K, bool OneMaterial, class Image>
 void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, const FluidRateParameters<Dim>& prm,
                             const SphWorkspace& work, const double* porosity, FluidPairs<Dim>& pairs,
                             const Image image) {
     using Vec = core::Vec<Dim>;
     using Sum = FluidSum<Dim>;
+    const bool porous = porosity != nullptr;  // coupled to grains: `density` holds rho_bar = eps rho (eq. 21)
     const Vec* x = ps.position();
     const Vec* v = ps.velocity();
     const double* rho = ps.density();
@@ -156,69 +159,120 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
     const double* hydrostatic_scale = hydrostatic_scales.data();
     const std::size_t row_length = static_cast<std::size_t>(lists.longest_upper());
 
+    // Columns of a row, one per gathered or computed value of its pairs (below).
+    enum Column : std::size_t { xab_0 = 0, vab_0 = Dim, rho_b_col = 2 * Dim, rho_b_true_col, p_term_b_col, alpha_b_col,
+                                beta_b_col, c_b_col, nu_b_col, scale_b_col, force_0, vx_f_col = force_0 + Dim,
+                                diffusion_a_col, laplacian_col, diffusion_b_col, column_count };
+
     auto visit = [&](Index a, Sum& sum_a, auto&& share) {
-        // b's shares of a's pairs: computed in the first loop (free of scatter, so it could vectorise),
-        // added to the partners in a second.
+        // A row's pairs in three loops: the partners' values gathered into contiguous columns (the
+        // loads through the list), the pair arithmetic over the columns (no indirection, no branch: it
+        // vectorises), then a's sums in list order and b's shares. Each value is the one a single fused
+        // loop computed, and the sums run in the same order: the same bits.
         thread_local std::vector<double> rows;
-        rows.resize(row_length * (Dim + 2));
-        double* share_v[Dim];
-        for (int d = 0; d < Dim; ++d) share_v[d] = rows.data() + row_length * d;
-        double* share_continuity = rows.data() + row_length * Dim;
-        double* share_diffusion = rows.data() + row_length * (Dim + 1);
+        rows.resize(row_length * column_count);
+        auto column = [&](std::size_t c) { return rows.data() + row_length * c; };
 
         const Vec xa = x[a];
         const Vec va = v[a];
         const double rho_a = rho[a];
-        const double rho_a_true = Porous ? rho_a / porosity[a] : rho_a;
+        const double rho_a_true = porous ? rho_a / porosity[a] : rho_a;
         const double p_term_a = p_term[a];
         const double inv_rho_a = 1.0 / rho_a;
         const PairCoefficients& ca = coef[mat[a]];
         const double scale_a = hydrostatic_scale[mat[a]];
 
-        double dv[Dim] = {};
-        double continuity = 0.0, diffusion = 0.0;
         const Index first = lists.upper_begin(a), last = lists.upper_end(a);
-#pragma omp simd reduction(+ : dv[:Dim], continuity, diffusion)
-        for (Index k = first; k < last; ++k) {
-            const Index b = upper[k];
-            const Index j = k - first;
+        const Index count = last - first;
+        double* col_x[Dim];
+        double* col_v[Dim];
+        double* col_force[Dim];
+        for (int d = 0; d < Dim; ++d) {
+            col_x[d] = column(xab_0 + static_cast<std::size_t>(d));
+            col_v[d] = column(vab_0 + static_cast<std::size_t>(d));
+            col_force[d] = column(force_0 + static_cast<std::size_t>(d));
+        }
+        double* col_rho_b = column(rho_b_col);
+        double* col_rho_b_true = column(rho_b_true_col);
+        double* col_p_term_b = column(p_term_b_col);
+        double* col_alpha_b = column(alpha_b_col);
+        double* col_beta_b = column(beta_b_col);
+        double* col_c_b = column(c_b_col);
+        double* col_nu_b = column(nu_b_col);
+        double* col_scale_b = column(scale_b_col);
+        double* col_vx_f = column(vx_f_col);
+        double* col_diffusion_a = column(diffusion_a_col);
+        double* col_laplacian = column(laplacian_col);
+        double* col_diffusion_b = column(diffusion_b_col);
+
+        for (Index j = 0; j < count; ++j) {
+            const Index b = upper[first + j];
             const Vec xab = image(xa - x[b]);
+            const Vec vab = va - v[b];
+            for (int d = 0; d < Dim; ++d) {
+                col_x[d][j] = xab[d];
+                col_v[d][j] = vab[d];
+            }
+            col_rho_b[j] = rho[b];
+            col_rho_b_true[j] = porous ? rho[b] / porosity[b] : rho[b];
+            col_p_term_b[j] = p_term[b];
+            if constexpr (!OneMaterial) {
+                const PairCoefficients& cb = coef[mat[b]];
+                col_alpha_b[j] = cb.alpha;
+                col_beta_b[j] = cb.beta;
+                col_c_b[j] = cb.sound_speed;
+                col_nu_b[j] = cb.kinematic_viscosity;
+                col_scale_b[j] = hydrostatic_scale[mat[b]];
+            }
+        }
+#pragma omp simd
+        for (Index j = 0; j < count; ++j) {
+            Vec xab, vab;
+            for (int d = 0; d < Dim; ++d) {
+                xab[d] = col_x[d][j];
+                vab[d] = col_v[d][j];
+            }
             const double r2 = core::norm2(xab);
             const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_a W_ab = xab * f
-            const Vec vab = va - v[b];
             const double vx = core::dot(vab, xab);
-            const PairCoefficients& cb = coef[mat[b]];
+            PairCoefficients cb = ca;
+            double scale_b = scale_a;
+            if constexpr (!OneMaterial) {
+                cb = PairCoefficients{col_c_b[j], 0.0, col_alpha_b[j], col_beta_b[j], col_nu_b[j]};
+                scale_b = col_scale_b[j];
+            }
+            const double rho_b = col_rho_b[j];
             const double inv_r2 = 1.0 / (r2 + eps_h2);
-            const double inv_rho_sum = 1.0 / (rho_a + rho[b]);
+            const double inv_rho_sum = 1.0 / (rho_a + rho_b);
             // Pressure (eq. 23) and artificial viscosity (eqs. 26-27) along grad W, laminar viscosity
             // (eq. 25, Lo & Shao 2002) along v_ab: the force per unit mass of each particle's partner.
             const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
-            const double along_x = (-(p_term_a + p_term[b]) - pi_ab) * f;
+            const double along_x = (-(p_term_a + col_p_term_b[j]) - pi_ab) * f;
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
             const double along_v = 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
-            const double vx_f = vx * f;  // v_ab . grad_a W_ab, the same seen from b
+            for (int d = 0; d < Dim; ++d) col_force[d][j] = xab[d] * along_x + vab[d] * along_v;
+            col_vx_f[j] = vx * f;  // v_ab . grad_a W_ab, the same seen from b
             // Density diffusion, less its hydrostatic part (rho^H_a - rho^H_b), each side with its own rho0/c0^2.
             const double laplacian = r2 * f * inv_r2;
             const double g_x = core::dot(g_hydrostatic, xab);
-            const double rho_b_true = Porous ? rho[b] / porosity[b] : rho[b];
-            const double m_b = m[b], volume_b = volume[b];
-            for (int d = 0; d < Dim; ++d) {
-                const double force = xab[d] * along_x + vab[d] * along_v;
-                dv[d] += m_b * force;
-                share_v[d][j] = force;
-            }
-            continuity += volume_b * vx_f;  // eq. (22)
-            share_continuity[j] = vx_f;
-            diffusion += volume_b * ((rho_a_true - rho_b_true) - scale_a * g_x) * laplacian;
-            share_diffusion[j] = ((rho_b_true - rho_a_true) + hydrostatic_scale[mat[b]] * g_x) * laplacian;
+            const double rho_b_true = col_rho_b_true[j];
+            col_diffusion_a[j] = (rho_a_true - rho_b_true) - scale_a * g_x;
+            col_laplacian[j] = laplacian;
+            col_diffusion_b[j] = ((rho_b_true - rho_a_true) + scale_b * g_x) * laplacian;
         }
+        double dv[Dim] = {};
+        double continuity = 0.0, diffusion = 0.0;
         const double m_a = m[a], volume_a = volume[a];
-        for (Index k = first; k < last; ++k) {
-            const Index j = k - first;
-            Sum& sum_b = share(upper[k]);
-            for (int d = 0; d < Dim; ++d) sum_b.dv[d] -= m_a * share_v[d][j];
-            sum_b.continuity += volume_a * share_continuity[j];
-            sum_b.diffusion += volume_a * share_diffusion[j];
+        for (Index j = 0; j < count; ++j) {
+            const Index b = upper[first + j];
+            const double m_b = m[b], volume_b = volume[b];
+            for (int d = 0; d < Dim; ++d) dv[d] += m_b * col_force[d][j];
+            continuity += volume_b * col_vx_f[j];  // eq. (22)
+            diffusion += volume_b * col_diffusion_a[j] * col_laplacian[j];
+            Sum& sum_b = share(b);
+            for (int d = 0; d < Dim; ++d) sum_b.dv[d] -= m_a * col_force[d][j];
+            sum_b.continuity += volume_a * col_vx_f[j];
+            sum_b.diffusion += volume_a * col_diffusion_b[j];
         }
 
         // Walls and solids, one-sided: pressure (against a solid in the multi-phase form of Colagrossi &
@@ -254,7 +308,7 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
         acc[i] = a;
         // With grains, d(rho_bar)/dt takes eps_i times the diffusion of rho.
         const double diffusion_scale = 2.0 * delta * h * coef[mat[i]].sound_speed;
-        drho[i] = rho[i] * total.continuity + (Porous ? porosity[i] : 1.0) * diffusion_scale * total.diffusion;
+        drho[i] = rho[i] * total.continuity + (porous ? porosity[i] : 1.0) * diffusion_scale * total.diffusion;
     };
     neighbors::sum_pairs_once(lists, pairs.own, pairs.spill, visit, finish);
 }
@@ -286,6 +340,15 @@ void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbor
     if (!L)
         pairs.lists.update(neighbors.offsets(), neighbors.indices(), neighbors.particle_count(), neighbors.version(),
                            particles.phase(), static_cast<std::int32_t>(Phase::fluid));
+    // Whether every fluid particle has the material of the first.
+    const Index n = particles.size();
+    const std::int32_t* phase = particles.phase();
+    const std::int32_t* mat = particles.material();
+    const auto fluid = static_cast<std::int32_t>(Phase::fluid);
+    const Index first_fluid = parallel::first_index(n, [&](Index i) { return phase[i] == fluid; });
+    const bool one_material =
+        first_fluid < 0 ||
+        parallel::first_index(n, [&](Index i) { return phase[i] == fluid && mat[i] != mat[first_fluid]; }) < 0;
     std::visit(
         [&](const auto& k) {
             using KernelType = std::decay_t<decltype(k)>;
@@ -296,11 +359,11 @@ void compute_fluid_rates(particles::SphParticles<Dim>& particles, const neighbor
                 else if (L)
                     fluid_rates_loop<Dim, KernelType, false, true>(particles, neighbors, k, parameters, workspace,
                                                                    nullptr, L, image);
-                else if (porosity)
+                else if (one_material)
                     fluid_rates_pairs_once<Dim, KernelType, true>(particles, k, parameters, workspace, porosity,
                                                                   pairs, image);
                 else
-                    fluid_rates_pairs_once<Dim, KernelType, false>(particles, k, parameters, workspace, nullptr,
+                    fluid_rates_pairs_once<Dim, KernelType, false>(particles, k, parameters, workspace, porosity,
                                                                    pairs, image);
             });
         },

@@ -19,8 +19,8 @@ using grit::Phase;
 
 namespace {
 
-/// A jittered lattice (per_axis^Dim particles, spacing dx) of two fluids, a wall along the bottom rows and
-/// a solid block in one corner; random velocities, densities, pressures and masses (+-20 %).
+/// A jittered lattice (per_axis^Dim particles, spacing dx) of two fluids (or one), a wall along the bottom
+/// rows and a solid block in one corner; random velocities, densities, pressures and masses (+-20 %).
 template <int Dim>
 struct Cloud {
     static constexpr double dx = 0.01, h = 1.25 * dx;
@@ -30,7 +30,7 @@ struct Cloud {
     grit::sph::FluidRateParameters<Dim> prm;
     std::vector<double> porosity;
 
-    Cloud(int per_axis, unsigned seed) {
+    Cloud(int per_axis, unsigned seed, bool two_fluids = true) {
         std::mt19937 rng(seed);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
         Index n = 1;
@@ -48,7 +48,7 @@ struct Cloud {
             }
             const bool wall = cell[Dim - 1] < 3;
             const bool solid = !wall && cell[0] < per_axis / 4 && cell[Dim - 1] < per_axis / 3;
-            const int fluid_material = cell[0] % 3 == 0 ? 1 : 0;
+            const int fluid_material = two_fluids && cell[0] % 3 == 0 ? 1 : 0;
             ps.phase()[i] = static_cast<std::int32_t>(wall ? Phase::wall : solid ? Phase::solid : Phase::fluid);
             ps.material()[i] = wall ? 2 : solid ? 3 : fluid_material;
             ps.density()[i] = (solid ? 2700.0 : 1000.0) * (1.0 + 0.02 * u(rng));
@@ -150,6 +150,16 @@ TEST(FluidRates, EachPairOnceEqualsTheGatherSums3D) {
     Cloud<3> cloud(10, 4);
     cloud.check_against_gather(false);
     cloud.check_against_gather(true);
+}
+
+// One fluid material: the pair loop takes a's coefficients for both sides instead of gathering b's.
+TEST(FluidRates, EachPairOnceEqualsTheGatherSumsWithOneFluid) {
+    Cloud<2> flat(30, 6, false);
+    flat.check_against_gather(false);
+    flat.check_against_gather(true);
+    Cloud<3> box(10, 7, false);
+    box.check_against_gather(false);
+    box.check_against_gather(true);
 }
 
 // Several blocks with spills (about 3600 particles, 70,000 pairs): the same bits at 1 and 2 threads.
