@@ -89,9 +89,11 @@ void fluid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
             // Across a fluid-solid interface (density ratio up to 9) the pressure term takes the
             // multi-phase form (p_a + p_b) / (rho_a rho_b) of Colagrossi & Landrini (2003); still
-            // antisymmetric, so momentum is conserved.
+            // antisymmetric, so momentum is conserved. Repulsive only: a solid in tension does not pull
+            // water into itself (docs/theory.md, "Water inside a solid").
             const double ratio = rho[b] * inv_rho_a;  // rho_b / rho_a
-            const double pressure = phase[b] == solid ? (p_term_a / ratio + p_term[b] * ratio) : (p_term_a + p_term[b]);
+            const double pressure = phase[b] == solid ? std::max(p_term_a / ratio + p_term[b] * ratio, 0.0)
+                                                      : (p_term_a + p_term[b]);
             const double along_x = m[b] * (-pressure - pi_ab) * f;
 
             // Laminar viscosity, eq. (25) in the form of Lo & Shao (2002), along v_ab.
@@ -292,7 +294,8 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
             continuity += volume[b] * vx * f;
             const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
             const double ratio = rho[b] * inv_rho_a;  // rho_b / rho_a
-            const double pressure = phase[b] == solid ? (p_term_a / ratio + p_term[b] * ratio) : (p_term_a + p_term[b]);
+            const double pressure = phase[b] == solid ? std::max(p_term_a / ratio + p_term[b] * ratio, 0.0)
+                                                      : (p_term_a + p_term[b]);
             const double along_x = m[b] * (-pressure - pi_ab) * f;
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
             const double along_v = m[b] * 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;

@@ -265,8 +265,9 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
                 work_rate += 0.5 * m[b] * pi_ab * vx * f;
             }
             const bool is_wall = phase[b] == wall;
+            // Against water repulsive only, as in the fluid's sums (docs/theory.md, "Water inside a solid").
             const double pressure = is_wall ? (p_term_a + p_term[b])
-                                            : (p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a);
+                                            : std::max(p_term_a * rho_a / rho[b] + p_term[b] * rho[b] / rho_a, 0.0);
             dv += xab * (-m[b] * pressure * f);
             work_rate += 0.5 * m[b] * pressure * vx * f;
             if (is_wall) continuity += volume[b] * vx * f;  // eq. (28) against walls

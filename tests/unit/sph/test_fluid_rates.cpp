@@ -188,3 +188,40 @@ TEST(FluidRates, OneAndTwoThreadsGiveTheSameBits) {
     for (std::size_t i = 0; i < out[0].size(); ++i)
         ASSERT_EQ(out[0][i], out[1][i]) << "value " << i;
 }
+
+// Across a fluid-solid interface the pressure term is repulsive only: copper in tension beside water
+// (p_water + p_solid < 0) does not pull the water into itself (docs/theory.md, "Water inside a solid");
+// water at a higher pressure than the copper's tension still pushes it away.
+TEST(FluidRates, SolidInTensionDoesNotPullWater) {
+    constexpr double dx = 1e-4, h = 1.25 * dx;
+    auto water_acceleration = [&](double p_water, double p_solid) {
+        grit::particles::SphParticles<2> ps;
+        ps.append(2);
+        ps.position()[0] = {0.0, 0.8 * dx};  // water above
+        ps.position()[1] = {0.0, 0.0};       // copper below
+        ps.phase()[0] = static_cast<std::int32_t>(Phase::fluid);
+        ps.phase()[1] = static_cast<std::int32_t>(Phase::solid);
+        ps.material()[0] = 0;
+        ps.material()[1] = 1;
+        ps.density()[0] = 1000.0;
+        ps.density()[1] = 8960.0;
+        ps.pressure()[0] = p_water;
+        ps.pressure()[1] = p_solid;
+        ps.mass()[0] = 1000.0 * dx * dx;
+        ps.mass()[1] = 8960.0 * dx * dx;
+        for (Index i = 0; i < 2; ++i) ps.velocity()[i] = {0.0, 0.0};
+        grit::neighbors::ParticleNeighbors<2> nb;
+        nb.update(ps, 2.0 * h + 0.2 * dx, 0.2 * dx, true);
+        grit::sph::FluidRateParameters<2> prm;
+        prm.materials = {{1480.0, 1000.0, 0.1, 0.1, 1e-6}, {3940.0, 8960.0, 1.0, 1.0, 0.0}};
+        grit::sph::SphWorkspace work;
+        grit::sph::prepare_sph_workspace(ps, work);
+        grit::sph::FluidPairs<2> pairs;
+        grit::sph::compute_fluid_rates(ps, nb.list(), grit::sph::Kernel<2>(grit::sph::CubicSpline<2>(h)), prm, work,
+                                       pairs, nullptr);
+        return ps.acceleration()[0][1];
+    };
+    EXPECT_EQ(water_acceleration(1.0e6, -1.0e9), 0.0);  // would pull the water down into the copper
+    EXPECT_GT(water_acceleration(1.0e9, -1.0e6), 0.0);  // the water's pressure wins: pushed up
+    EXPECT_GT(water_acceleration(1.0e6, 1.0e6), 0.0);
+}
