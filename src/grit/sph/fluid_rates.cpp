@@ -169,8 +169,8 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
     auto visit = [&](Index a, Sum& sum_a, auto&& share) {
         // A row's pairs in three loops: the partners' values gathered into contiguous columns (the
         // loads through the list), the pair arithmetic over the columns (no indirection, no branch: it
-        // vectorises), then a's sums in list order and b's shares. Each value is the one a single fused
-        // loop computed, and the sums run in the same order: the same bits.
+        // vectorises), then a's sums in list order and b's shares: the terms of a single fused loop, summed
+        // in its order (the last bits differ where the compiler fuses other multiply-adds).
         thread_local std::vector<double> rows;
         rows.resize(row_length * column_count);
         auto column = [&](std::size_t c) { return rows.data() + row_length * c; };
@@ -278,7 +278,8 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
         }
 
         // Walls and solids, one-sided: pressure (against a solid in the multi-phase form of Colagrossi &
-        // Landrini 2003), artificial and laminar viscosity and continuity, no density diffusion.
+        // Landrini 2003, repulsive only), artificial and laminar viscosity and continuity, no density
+        // diffusion.
         const Index first_other = lists.other_begin(a), last_other = lists.other_end(a);
 #pragma omp simd reduction(+ : dv[:Dim], continuity)
         for (Index k = first_other; k < last_other; ++k) {
