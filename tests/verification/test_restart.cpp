@@ -75,7 +75,7 @@ void advance(Simulation<Dim>& s, double target, bool steps) {
 // Straight to `end`, writing a checkpoint at `middle` on the way, against a new Simulation loading that
 // checkpoint and going on to `end`. With steps > 0, `middle` and `end` count steps from the primed
 // start instead of times. Writing a checkpoint does not change the run it is taken from (the writing
-// is const, Simulation::write_checkpoint); with `also_unsaved`, a third run that writes none checks it.
+// is const, Simulation::write_checkpoint_file); with `also_unsaved`, a third run that writes none checks it.
 template <int Dim>
 void check_restart(const grit::io::CaseSpec& spec, double middle, double end, bool steps,
                    const std::function<void(Simulation<Dim>&)>& at_middle = {}, bool also_unsaved = false) {

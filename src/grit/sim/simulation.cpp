@@ -500,11 +500,11 @@ void Simulation<Dim>::save_checkpoint(const std::filesystem::path& file) {
     // The logs first: the checkpoint records how many rows each holds, and a restart keeps those.
     state_.impacts.flush();
     for (auto& m : modules_) m->flush_logs();
-    write_checkpoint(file);
+    write_checkpoint_file(file);
 }
 
 template <int Dim>
-void Simulation<Dim>::write_checkpoint(const std::filesystem::path& file) const {
+void Simulation<Dim>::write_checkpoint_file(const std::filesystem::path& file) const {
     namespace fs = std::filesystem;
     const fs::path temporary = file.parent_path() / ("." + file.filename().string() + ".tmp");
     {

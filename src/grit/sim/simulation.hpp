@@ -93,7 +93,7 @@ public:
 
     /// Writes the run state and every module's own state to `file` (atomically: a temporary file, then
     /// a rename). Continuing from it is bit-identical to not stopping, and writing it does not change the
-    /// run: the log files are flushed, then write_checkpoint, which is const, writes the file.
+    /// run: the log files are flushed, then write_checkpoint_file, which is const, writes it.
     void save_checkpoint(const std::filesystem::path& file);
     /// Reads a checkpoint written by a run of this case. Throws core::InputError naming what does not fit
     /// (another case, another spacing, dimension or materials, another format version, an unreadable file).
@@ -128,7 +128,7 @@ public:
     std::vector<OutputValue> output_values() const;
 
 private:
-    void write_checkpoint(const std::filesystem::path& file) const;
+    void write_checkpoint_file(const std::filesystem::path& file) const;
     void check_periodic_lengths() const;
     void check_health();
     /// The first particle, grain or module state that is not healthy, described; empty when all are.

@@ -173,7 +173,8 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
         // in its order (the last bits differ where the compiler fuses other multiply-adds).
         thread_local std::vector<double> rows;
         rows.resize(row_length * column_count);
-        auto column = [&](std::size_t c) { return rows.data() + row_length * c; };
+        double* col[column_count];  // col[c][j]: column c of the row's j-th pair
+        for (std::size_t c = 0; c < column_count; ++c) col[c] = rows.data() + row_length * c;
 
         const Vec xa = x[a];
         const Vec va = v[a];
@@ -186,53 +187,32 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
 
         const Index first = lists.upper_begin(a), last = lists.upper_end(a);
         const Index count = last - first;
-        double* col_x[Dim];
-        double* col_v[Dim];
-        double* col_force[Dim];
-        for (int d = 0; d < Dim; ++d) {
-            col_x[d] = column(xab_0 + static_cast<std::size_t>(d));
-            col_v[d] = column(vab_0 + static_cast<std::size_t>(d));
-            col_force[d] = column(force_0 + static_cast<std::size_t>(d));
-        }
-        double* col_rho_b = column(rho_b_col);
-        double* col_rho_b_true = column(rho_b_true_col);
-        double* col_p_term_b = column(p_term_b_col);
-        double* col_alpha_b = column(alpha_b_col);
-        double* col_beta_b = column(beta_b_col);
-        double* col_c_b = column(c_b_col);
-        double* col_nu_b = column(nu_b_col);
-        double* col_scale_b = column(scale_b_col);
-        double* col_vx_f = column(vx_f_col);
-        double* col_diffusion_a = column(diffusion_a_col);
-        double* col_laplacian = column(laplacian_col);
-        double* col_diffusion_b = column(diffusion_b_col);
-
         for (Index j = 0; j < count; ++j) {
             const Index b = upper[first + j];
             const Vec xab = image(xa - x[b]);
             const Vec vab = va - v[b];
             for (int d = 0; d < Dim; ++d) {
-                col_x[d][j] = xab[d];
-                col_v[d][j] = vab[d];
+                col[xab_0 + d][j] = xab[d];
+                col[vab_0 + d][j] = vab[d];
             }
-            col_rho_b[j] = rho[b];
-            col_rho_b_true[j] = porous ? rho[b] / porosity[b] : rho[b];
-            col_p_term_b[j] = p_term[b];
+            col[rho_b_col][j] = rho[b];
+            col[rho_b_true_col][j] = porous ? rho[b] / porosity[b] : rho[b];
+            col[p_term_b_col][j] = p_term[b];
             if constexpr (!OneMaterial) {
                 const PairCoefficients& cb = coef[mat[b]];
-                col_alpha_b[j] = cb.alpha;
-                col_beta_b[j] = cb.beta;
-                col_c_b[j] = cb.sound_speed;
-                col_nu_b[j] = cb.kinematic_viscosity;
-                col_scale_b[j] = hydrostatic_scale[mat[b]];
+                col[alpha_b_col][j] = cb.alpha;
+                col[beta_b_col][j] = cb.beta;
+                col[c_b_col][j] = cb.sound_speed;
+                col[nu_b_col][j] = cb.kinematic_viscosity;
+                col[scale_b_col][j] = hydrostatic_scale[mat[b]];
             }
         }
 #pragma omp simd
         for (Index j = 0; j < count; ++j) {
             Vec xab, vab;
             for (int d = 0; d < Dim; ++d) {
-                xab[d] = col_x[d][j];
-                vab[d] = col_v[d][j];
+                xab[d] = col[xab_0 + d][j];
+                vab[d] = col[vab_0 + d][j];
             }
             const double r2 = core::norm2(xab);
             const double f = kernel.gradient_factor(std::sqrt(r2));  // grad_a W_ab = xab * f
@@ -240,27 +220,27 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
             PairCoefficients cb = ca;
             double scale_b = scale_a;
             if constexpr (!OneMaterial) {
-                cb = PairCoefficients{col_c_b[j], 0.0, col_alpha_b[j], col_beta_b[j], col_nu_b[j]};
-                scale_b = col_scale_b[j];
+                cb = PairCoefficients{col[c_b_col][j], 0.0, col[alpha_b_col][j], col[beta_b_col][j], col[nu_b_col][j]};
+                scale_b = col[scale_b_col][j];
             }
-            const double rho_b = col_rho_b[j];
+            const double rho_b = col[rho_b_col][j];
             const double inv_r2 = 1.0 / (r2 + eps_h2);
             const double inv_rho_sum = 1.0 / (rho_a + rho_b);
             // Pressure (eq. 23) and artificial viscosity (eqs. 26-27) along grad W, laminar viscosity
             // (eq. 25, Lo & Shao 2002) along v_ab: the force per unit mass of each particle's partner.
             const double pi_ab = artificial_viscosity(h, vx, inv_r2, inv_rho_sum, ca, cb);
-            const double along_x = (-(p_term_a + col_p_term_b[j]) - pi_ab) * f;
+            const double along_x = (-(p_term_a + col[p_term_b_col][j]) - pi_ab) * f;
             const double nu = 0.5 * (ca.kinematic_viscosity + cb.kinematic_viscosity);
             const double along_v = 4.0 * nu * r2 * f * inv_rho_sum * inv_r2;
-            for (int d = 0; d < Dim; ++d) col_force[d][j] = xab[d] * along_x + vab[d] * along_v;
-            col_vx_f[j] = vx * f;  // v_ab . grad_a W_ab, the same seen from b
+            for (int d = 0; d < Dim; ++d) col[force_0 + d][j] = xab[d] * along_x + vab[d] * along_v;
+            col[vx_f_col][j] = vx * f;  // v_ab . grad_a W_ab, the same seen from b
             // Density diffusion, less its hydrostatic part (rho^H_a - rho^H_b), each side with its own rho0/c0^2.
             const double laplacian = r2 * f * inv_r2;
             const double g_x = core::dot(g_hydrostatic, xab);
-            const double rho_b_true = col_rho_b_true[j];
-            col_diffusion_a[j] = (rho_a_true - rho_b_true) - scale_a * g_x;
-            col_laplacian[j] = laplacian;
-            col_diffusion_b[j] = ((rho_b_true - rho_a_true) + scale_b * g_x) * laplacian;
+            const double rho_b_true = col[rho_b_true_col][j];
+            col[diffusion_a_col][j] = (rho_a_true - rho_b_true) - scale_a * g_x;
+            col[laplacian_col][j] = laplacian;
+            col[diffusion_b_col][j] = ((rho_b_true - rho_a_true) + scale_b * g_x) * laplacian;
         }
         double dv[Dim] = {};
         double continuity = 0.0, diffusion = 0.0;
@@ -268,13 +248,13 @@ void fluid_rates_pairs_once(particles::SphParticles<Dim>& ps, const K& kernel, c
         for (Index j = 0; j < count; ++j) {
             const Index b = upper[first + j];
             const double m_b = m[b], volume_b = volume[b];
-            for (int d = 0; d < Dim; ++d) dv[d] += m_b * col_force[d][j];
-            continuity += volume_b * col_vx_f[j];  // eq. (22)
-            diffusion += volume_b * col_diffusion_a[j] * col_laplacian[j];
+            for (int d = 0; d < Dim; ++d) dv[d] += m_b * col[force_0 + d][j];
+            continuity += volume_b * col[vx_f_col][j];  // eq. (22)
+            diffusion += volume_b * col[diffusion_a_col][j] * col[laplacian_col][j];
             Sum& sum_b = share(b);
-            for (int d = 0; d < Dim; ++d) sum_b.dv[d] -= m_a * col_force[d][j];
-            sum_b.continuity += volume_a * col_vx_f[j];
-            sum_b.diffusion += volume_a * col_diffusion_b[j];
+            for (int d = 0; d < Dim; ++d) sum_b.dv[d] -= m_a * col[force_0 + d][j];
+            sum_b.continuity += volume_a * col[vx_f_col][j];
+            sum_b.diffusion += volume_a * col[diffusion_b_col][j];
         }
 
         // Walls and solids, one-sided: pressure (against a solid in the multi-phase form of Colagrossi &
