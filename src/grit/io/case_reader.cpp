@@ -465,6 +465,8 @@ material::Material read_material(const Section& s, const std::string& name) {
             f.D3 = s.number_or("failure_d3", f.D3);
             f.D4 = s.number_or("failure_d4", f.D4);
             f.D5 = s.number_or("failure_d5", f.D5);
+            jc.surface_triaxiality =
+                s.number_or("failure_surface_triaxiality", jc.surface_triaxiality, positive("[-]"));
             f.reference_strain_rate = st.reference_strain_rate;
             f.room_temperature = st.room_temperature;
             f.melt_temperature = st.melt_temperature;

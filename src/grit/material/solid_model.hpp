@@ -26,6 +26,11 @@ struct JohnsonCook {
     JohnsonCookStrength strength;
     JohnsonCookFailure failure;
     bool failure_enabled = true;
+    /// The largest triaxiality eq. (35) takes at a particle on the solid's surface (free or wetted): a
+    /// surface carries at most its normal traction, so one principal stress is zero or compressive, and
+    /// such a state reaches 2/3 at most (equibiaxial tension). SPH does not hold a surface particle's own
+    /// pressure to that; above it, the triaxiality is a discretisation error (docs/theory.md).
+    double surface_triaxiality = 2.0 / 3.0;
 };
 
 /// Johnson-Holmquist (JH-2) brittle strength, damage and bulking. Eq. (41) needs K1 and rho0 of the
@@ -99,10 +104,12 @@ inline double equivalent_strain_rate(const core::SymTensor3& strain_rate) noexce
 /// D += d eps_p / eps_f (eq. 36), heating dT = beta sigma_y d eps_p / (rho c_p). JH-2: strength from
 /// pressure and damage (eq. 38), damage (eq. 39), bulking pressure (eq. 41). At D >= 1 the deviatoric
 /// stress is zero and plastic strain stops. `pressure` is p (positive in compression); `density` rho.
+/// `at_surface`: the point is on the solid's surface, where eq. (35)'s triaxiality is bounded by
+/// JohnsonCook::surface_triaxiality.
 template <class Model>
 SolidPointState update_solid_point(const Model& model, const SolidProperties& props, const SolidPointState& s,
                                    const core::SymTensor3& strain_rate, const Spin& spin, double pressure,
-                                   double density, double dt) noexcept {
+                                   double density, double dt, bool at_surface = false) noexcept {
     SolidPointState next = s;
     // A failed ductile point carries no shear (eq. 36; it is removed at the end of the step). Fractured
     // rock keeps eq. (38)'s D = 1 strength sigma_f* = B (P*)^M: comminuted rock under confinement is
@@ -148,7 +155,8 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
                 next.temperature = s.temperature + props.taylor_quinney * sigma_y * d_eps / (density * props.specific_heat);
             if (model.failure_enabled) {
                 const double vm = next.deviatoric_stress.von_mises();
-                const double triaxiality = vm > 0.0 ? -pressure / vm : 0.0;
+                double triaxiality = vm > 0.0 ? -pressure / vm : 0.0;
+                if (at_surface) triaxiality = std::min(triaxiality, model.surface_triaxiality);
                 const double eps_f = model.failure.failure_strain(triaxiality, next.plastic_strain_rate, s.temperature);
                 next.damage = std::min(1.0, s.damage + d_eps / eps_f);  // eq. (36)
                 if (next.damage >= 1.0) next.deviatoric_stress = core::SymTensor3::zero();

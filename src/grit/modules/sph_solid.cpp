@@ -9,6 +9,7 @@
 #include "grit/core/disjoint_sets.hpp"
 #include "grit/material/solid_model.hpp"
 #include "grit/parallel/parallel.hpp"
+#include "grit/sph/correction_matrix.hpp"
 #include "grit/sph/pressure.hpp"
 
 namespace grit::modules {
@@ -126,6 +127,7 @@ void SolidModule<Dim>::update_stress() {
     const core::SymTensor3* rate = workspace_.strain_rate.data();
     const material::Spin* spin = workspace_.spin.data();
     const double* de = workspace_.energy_rate.data();
+    const core::SymTensor3* correction = workspace_.correction.data();
     const double dt = state_.clock.dt;
     failure_von_mises_.assign(static_cast<std::size_t>(ps.size()), std::numeric_limits<double>::quiet_NaN());
     double* failure_vm = failure_von_mises_.data();
@@ -141,7 +143,10 @@ void SolidModule<Dim>::update_stress() {
                     if (ph[i] != solid || mat[i] != id) return;
                     material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
                     const double damage_before = damage[i], vm_before = vm[i];
-                    s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt);
+                    // On the surface eq. (35) takes at most the triaxiality a surface can carry.
+                    const bool at_surface = sph::at_solid_surface<Dim>(correction[i]);
+                    s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt,
+                                                     at_surface);
                     if (s.damage >= 1.0 && damage_before < 1.0) failure_vm[i] = vm_before;
                     tau[i] = s.deviatoric_stress;
                     eps_p[i] = s.plastic_strain;

@@ -79,4 +79,14 @@ core::SymTensor3 bounded_correction(const double (&mm)[3][3]) {
     }
 }
 
+/// Whether a particle with correction L (bounded_correction) is on the solid's surface: M's eigenvalues
+/// are 1 inside a body and about 1/2 across a flat surface (less at edges, corners and fragments), so
+/// tr L is Dim inside and about Dim + 1 at a surface; the threshold Dim + 1/3 is M's normal eigenvalue
+/// at 3/4 with the others at 1, between the two and clear of the disorder of a flowing interior.
+template <int Dim>
+bool at_solid_surface(const core::SymTensor3& l) noexcept {
+    const double trace = Dim == 2 ? l.xx + l.yy : l.xx + l.yy + l.zz;  // in 2D, zz is 1, not a direction
+    return trace > Dim + 1.0 / 3.0;
+}
+
 }  // namespace grit::sph

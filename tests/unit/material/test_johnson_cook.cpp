@@ -333,6 +333,45 @@ TEST(SolidPointDriver, DamageAtConstantTriaxiality) {
     }
 }
 
+// (c'') On the solid's surface eq. (35) takes at most JohnsonCook::surface_triaxiality (2/3, equibiaxial
+// tension: a surface carries only its normal traction). Copper's failure constants, sheared at yield A
+// under p = -2A (triaxiality 2): inside, eps_f = 0.54 + 4.89 exp(-3.03 x 2) = 0.5514; on the surface,
+// 0.54 + 4.89 exp(-2.02) = 1.1887. Under compression (p = +0.1 A, triaxiality -0.1) the bound changes
+// nothing.
+TEST(SolidPointDriver, SurfaceBoundsTheTriaxialityOfEq35) {
+    const double A = 90.0e6, G = 46.0e9;
+    Material m = perfectly_plastic(A, G);
+    auto& jc = std::get<JohnsonCook>(m.solid_model);
+    jc.failure = jc_of(library_material("OFHC_copper")).failure;
+    jc.failure_enabled = true;
+    EXPECT_DOUBLE_EQ(jc_of(library_material("OFHC_copper")).surface_triaxiality, 2.0 / 3.0);
+    const double gamma_dot = 1.0, dt = 1.0e-4, d_eps = gamma_dot * dt / sqrt3;
+    // The plastic strain at which D reaches 1, stepping update_solid_point as the solid module does.
+    auto strain_at_failure = [&](double pressure, bool at_surface) {
+        SolidPointState s = grit::material::rest_state(m);
+        for (int k = 0; k < 200000 && s.damage < 1.0; ++k)
+            s = grit::material::update_solid_point(jc, m.solid, s, pure_shear(gamma_dot), Spin{}, pressure,
+                                                   m.reference_density(), dt, at_surface);
+        return s.damage >= 1.0 ? s.plastic_strain : -1.0;
+    };
+    struct Case {
+        double pressure;
+        bool at_surface;
+        double eps_f;
+    };
+    for (const Case c : {Case{-2.0 * A, false, 0.54 + 4.89 * std::exp(-3.03 * 2.0)},
+                         Case{-2.0 * A, true, 0.54 + 4.89 * std::exp(-3.03 * 2.0 / 3.0)},
+                         Case{0.1 * A, false, 0.54 + 4.89 * std::exp(0.303)},
+                         Case{0.1 * A, true, 0.54 + 4.89 * std::exp(0.303)}}) {
+        SCOPED_TRACE(testing::Message() << c.pressure << (c.at_surface ? " surface" : " inside"));
+        const double eps = strain_at_failure(c.pressure, c.at_surface);
+        EXPECT_GE(eps, c.eps_f * (1.0 - 1e-9));
+        EXPECT_LE(eps, c.eps_f + d_eps * (1.0 + 1e-9));
+    }
+    EXPECT_NEAR(0.54 + 4.89 * std::exp(-3.03 * 2.0), 0.5514, 1e-4);
+    EXPECT_NEAR(0.54 + 4.89 * std::exp(-3.03 * 2.0 / 3.0), 1.1887, 1e-4);
+}
+
 // (c') Damage with a varying triaxiality: copper at constant tension p = -200 MPa, so sigma* = 200 MPa /
 // (A + B eps^n) falls as the point hardens and eps_f(eps) = D1 + D2 exp(D3 sigma*) rises from 0.546 to ~1.6.
 // Failure is where integral_0^eps* d eps / eps_f(eps) = 1 (eq. 36 in the limit of small steps), computed here
