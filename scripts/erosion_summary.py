@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """How a specimen lost its mass, from a run's eroded.csv (one row per removed solid particle): the
 removals by cause and by time window, and the state the particles failed in (median and range of the
-plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface),
+plastic strain, triaxiality -p/sigma_vm, relative density rho/rho0 - 1 and depth below the surface, and
+how many were on the solid's surface),
 and how much the removals cluster: how many follow an earlier removal within --radius and --window,
 against how many would if the same removals, at the same times, lay at random places (a chain of
 failures, each starting the next, would show many more, and within a microsecond).
@@ -43,6 +44,11 @@ def describe(rows):
             lines.append(f"  {name:22s} median {fmt.format(q[1]):>9s}   range {fmt.format(q[0])} .. {fmt.format(q[2])}")
     tension = sum(1 for r in rows if math.isfinite(float(r["triaxiality"])) and float(r["triaxiality"]) > 1.0 / 3.0)
     lines.append(f"  failed in more tension than uniaxial (triaxiality > 1/3): {tension} of {len(rows)}")
+    if rows and "surface" in rows[0]:  # eroded.csv since 2026-11-27
+        surface = sum(1 for r in rows if r["surface"] == "1")
+        inside = sum(1 for r in rows if r["surface"] == "0")
+        lines.append(f"  on the solid's surface in their last step: {surface} of {len(rows)} ({inside} inside;"
+                     f" eq. 35 took at most failure_surface_triaxiality on the surface)")
     return lines
 
 

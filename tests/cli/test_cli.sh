@@ -721,7 +721,8 @@ eroded = json.load(open(d + "/summary.json"))["eroded_mass"]
 total = sum(float(r["mass"]) for r in rows)
 ok = (header.startswith("time,id,material,cause,x,y,mass,plastic_strain,damage,pressure,von_mises,triaxiality")
       and len(rows) > 0 and abs(total - eroded) <= 1e-9 * eroded
-      and all(r["cause"] == "failed" and float(r["damage"]) >= 1.0 and r["material"] == "Al6061_T6" for r in rows))
+      and all(r["cause"] == "failed" and float(r["damage"]) >= 1.0 and r["material"] == "Al6061_T6" for r in rows)
+      and header.endswith(",speed,surface") and all(r["surface"] == "1" for r in rows))  # the hammered top row
 print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}")
 sys.exit(0 if ok else 1)
 PYEOF

@@ -16,7 +16,7 @@ void ErosionLog::open(const std::filesystem::path& file, int dimension, std::vec
     const bool resume = rows > 0 || (rows == 0 && std::filesystem::exists(file));
     const std::string header = std::string("time,id,material,cause,") + (dimension_ == 3 ? "x,y,z," : "x,y,") +
                                "mass,plastic_strain,damage,pressure,von_mises,triaxiality,temperature,density," +
-                               "density_ratio,speed";
+                               "density_ratio,speed,surface";
     io::open_csv_log(file_, file, header, resume ? rows : -1);
     written_ = records_.size();
 }
@@ -29,9 +29,9 @@ void ErosionLog::flush() {
         file_ << fmt::format("{:.9g},{},{},{},", r.time, r.id,
                              m < material_names_.size() ? material_names_[m] : std::to_string(r.material), r.cause);
         for (int d = 0; d < dimension_; ++d) file_ << fmt::format("{:.9g},", r.position[static_cast<std::size_t>(d)]);
-        file_ << fmt::format("{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.mass,
+        file_ << fmt::format("{:.9g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{}\n", r.mass,
                              r.plastic_strain, r.damage, r.pressure, r.von_mises, r.triaxiality, r.temperature,
-                             r.density, r.density_ratio, r.speed);
+                             r.density, r.density_ratio, r.speed, r.surface);
     }
     file_.flush();
 }

@@ -30,6 +30,9 @@ struct ErosionRecord {
     double density = 0.0;      ///< [kg/m^3]
     double density_ratio = 0.0;  ///< rho / rho0: below 1 the particle has dilated (tension, voids)
     double speed = 0.0;        ///< [m/s]
+    /// 1 where the particle was on the solid's surface in its last step (sph::at_solid_surface: eq. 35
+    /// then took at most `failure_surface_triaxiality`), 0 inside, -1 unknown.
+    int surface = -1;
 };
 
 class ErosionLog {
