@@ -131,8 +131,6 @@ void SolidModule<Dim>::update_stress() {
     const double dt = state_.clock.dt;
     failure_von_mises_.assign(static_cast<std::size_t>(ps.size()), std::numeric_limits<double>::quiet_NaN());
     double* failure_vm = failure_von_mises_.data();
-    surface_.assign(static_cast<std::size_t>(ps.size()), 0);
-    std::int8_t* surface = surface_.data();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const auto& materials = setup_.spec.materials;
     for (std::size_t m = 0; m < materials.size(); ++m) {
@@ -147,7 +145,6 @@ void SolidModule<Dim>::update_stress() {
                     const double damage_before = damage[i], vm_before = vm[i];
                     // On the surface eq. (35) takes at most the triaxiality a surface can carry.
                     const bool at_surface = sph::at_solid_surface<Dim>(correction[i]);
-                    surface[i] = at_surface ? 1 : 0;
                     s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt,
                                                      at_surface);
                     if (s.damage >= 1.0 && damage_before < 1.0) failure_vm[i] = vm_before;
@@ -262,7 +259,8 @@ void SolidModule<Dim>::remove_failed() {
         r.density = rho[i];
         r.density_ratio = rho[i] / setup_.spec.materials[k].reference_density();
         r.speed = core::norm(v[i]);
-        r.surface = g < surface_.size() ? surface_[g] : -1;
+        // The correction of this step's sums, while the particle set is the one they were made for.
+        r.surface = workspace_generation_ == ps.generation() ? sph::at_solid_surface<Dim>(workspace_.correction[g]) : -1;
         erosion_log_.add(r);
     }
     ps.remove(keep);

@@ -3,7 +3,6 @@
 // JH-2 return, damage) and erosion (removal of failed or detached particles, booked as eroded mass).
 #pragma once
 
-#include <cstdint>
 #include <vector>
 
 #include "grit/analysis/erosion_log.hpp"
@@ -45,8 +44,6 @@ private:
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
     /// Per particle, this step: the von Mises stress before a ductile particle failed (its failure zeroes it).
     std::vector<double> failure_von_mises_;
-    /// Per particle, this step: 1 on the solid's surface (sph::at_solid_surface), else 0.
-    std::vector<std::int8_t> surface_;
     analysis::ErosionLog erosion_log_;
 };
 
