@@ -15,8 +15,6 @@ namespace grit::modules {
 
 namespace {
 constexpr double force_coefficient = 0.25;  ///< of the force condition dt <= C sqrt(h / |a|)
-constexpr auto fluid_phase = static_cast<std::int32_t>(Phase::fluid);
-constexpr auto wall_phase = static_cast<std::int32_t>(Phase::wall);
 }  // namespace
 
 template <int Dim>

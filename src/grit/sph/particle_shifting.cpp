@@ -9,8 +9,6 @@
 namespace grit::sph {
 
 namespace {
-constexpr auto fluid_phase = static_cast<std::int32_t>(Phase::fluid);
-constexpr auto wall_phase = static_cast<std::int32_t>(Phase::wall);
 constexpr double anti_pairing = 0.2;  ///< R of Lind et al. (2012) eq. 25, with exponent 4
 constexpr double max_shift = 0.2;     ///< of dx, a step
 }  // namespace

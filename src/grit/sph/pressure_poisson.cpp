@@ -18,8 +18,6 @@ namespace grit::sph {
 
 namespace {
 
-constexpr auto fluid_phase = static_cast<std::int32_t>(Phase::fluid);
-constexpr auto wall_phase = static_cast<std::int32_t>(Phase::wall);
 
 /// The neighbours that take part in the projection: fluid and wall particles.
 inline bool in_projection(std::int32_t phase) {
