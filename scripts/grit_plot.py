@@ -4,7 +4,7 @@
 A run folder: a picture of the last output (2D: water, solids coloured by plastic strain, grains to
 scale), the crater profile at several output times on one axis (2D cases with a crater analysis; from
 the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
-histograms of the impact speeds and angles (impacts.csv), and where the removed solid particles were and
+histograms of the impact speeds, angles and positions across x (impacts.csv), and where the removed solid particles were and
 the state they failed in (eroded.csv). A sweep folder (sweep.csv): C_d, C_w and
 eroded mass against each swept parameter.
 
@@ -157,14 +157,22 @@ def run_plots(folder, plots, profiles):
         save(fig, plots / "eroded_mass.png")
     impacts = folder / "impacts.csv"
     if impacts.exists() and impacts.stat().st_size > 0:
-        data = read_csv(impacts)
+        try:
+            data = read_csv(impacts)
+        except ValueError as e:  # rows of another grit version appended by a restart
+            print(f"warning: {impacts} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
+            data = np.empty(0)
         if data.size > 0 and "speed" in (data.dtype.names or ()):
-            fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
+            where = "x" in data.dtype.names  # the grain's position at contact (since 2026-11-27)
+            fig, axes = plt.subplots(1, 3 if where else 2, figsize=(13 if where else 9, 3.4))
             axes[0].hist(data["speed"], bins=20)
             axes[0].set_xlabel("impact speed [m/s]")
             axes[0].set_ylabel("impacts")
             axes[1].hist(data["angle"], bins=18, range=(0, 90))
             axes[1].set_xlabel("impact angle [deg] (90: normal)")
+            if where:  # across the jet: how far the grains spread the impacts (the crater's width)
+                axes[2].hist(data["x"] * 1e3, bins=40)
+                axes[2].set_xlabel("where the grain hit: x [mm]")
             save(fig, plots / "impacts.png")
     erosion_picture(folder, summary, plots)
     if summary:

@@ -365,7 +365,7 @@ if [[ $RC -eq 0 ]]; then
 else
     fail "grains: the drop test runs to 0.12 s" "exit $RC: $(cat "$W/stderr")"
 fi
-if [[ -f $G/impacts.csv ]] && [[ $(head -n 1 "$G/impacts.csv") == "time,grain,target,speed,angle" ]] &&
+if [[ -f $G/impacts.csv ]] && [[ $(head -n 1 "$G/impacts.csv") == "time,grain,target,speed,angle,x,y" ]] &&
     grep -q ',0,floor,' "$G/impacts.csv"; then
     pass "grains: impacts.csv has its header and the floor impact"
 else
@@ -730,6 +730,49 @@ PYEOF
     pass "eroded.csv: one row per removed particle, failed at D = 1, summing to eroded_mass ($why)"
 else
     fail "eroded.csv: one row per removed particle, summing to eroded_mass" "exit $RC; ${why:-}; $(head -n 3 "$W/eroded/eroded.csv" 2>&1)"
+fi
+# A solid block pushed into an outlet: what the outlet takes of it is eroded mass, logged as "outlet".
+mkdir -p "$W/outletcase"
+cat > "$W/outletcase/case.toml" <<'EOF'
+[simulation]
+dimension = 2
+[time]
+end = 2.0e-6
+[output]
+interval = 1.0e-6
+snapshots = false
+[numerics]
+particle_spacing = 1.0e-4
+[[solid]]
+shape = "box"
+min = [0.0, 0.0]
+max = [1.0e-3, 1.0e-3]
+material = "OFHC_copper"
+velocity = [100.0, 0.0]
+[[outlet]]
+min = [1.1e-3, -1.0e-3]
+max = [3.0e-3, 2.0e-3]
+[domain]
+min = [-1.0e-3, -1.0e-3]
+max = [3.0e-3, 2.0e-3]
+EOF
+grit run "$W/outletcase/case.toml" --out "$W/outlet" --threads 1 --quiet
+if [[ -n $JSON_PY ]] && [[ $RC -eq 0 ]] && why=$("$JSON_PY" - "$W/outlet" <<'PYEOF'
+import csv, json, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(d + "/eroded.csv")))
+eroded = json.load(open(d + "/summary.json"))["eroded_mass"]
+total = sum(float(r["mass"]) for r in rows)
+# 0.2 mm of travel takes the block's front column (x = 0.95 mm) past x = 1.1 mm: 10 particles
+ok = (len(rows) == 10 and all(r["cause"] == "outlet" and float(r["x"]) >= 1.1e-3 for r in rows)
+      and eroded > 0.0 and abs(total - eroded) <= 1e-9 * eroded)
+print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}")
+sys.exit(0 if ok else 1)
+PYEOF
+); then
+    pass "eroded.csv: solid taken by an outlet before it failed is logged as 'outlet' ($why)"
+else
+    fail "eroded.csv: solid taken by an outlet is logged" "exit $RC; ${why:-}; $(head -n 3 "$W/outlet/eroded.csv" 2>&1)"
 fi
 grit run "$HYDRO" --out "$W/dump" --set time.end=2e-3 --set output.snapshots=false --dump-from 3 --quiet
 steps=$(grep -o '"steps": *[0-9]*' "$W/dump/summary.json" 2>/dev/null | grep -o '[0-9]*$' || echo 0)

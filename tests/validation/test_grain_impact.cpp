@@ -72,6 +72,12 @@ TEST(GrainImpact, DropTestCaseReboundsByRestitutionSquared) {
         EXPECT_EQ(log[k].target, "floor");
         EXPECT_NEAR(log[k].angle, 90.0, 1e-6);
     }
+    // Each impact is logged where the grain touches the floor: its centre a radius (5 mm) above it, to
+    // within a step's fall (under a micrometre), and on the vertical it was dropped along.
+    for (const auto& r : log) {
+        EXPECT_EQ(r.position[0], 0.0);
+        EXPECT_NEAR(r.position[1], 0.005, 1e-6);
+    }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,6 +28,7 @@ struct Shot {
     double wear_mass = 0.0;
     std::size_t impacts = 0;
     double logged_angle = 0.0, logged_speed = 0.0;
+    std::array<double, 3> logged_position{};
 };
 
 /// Fires the case's grain at `speed` and `angle` (degrees from the plate) so that it strikes the plate's
@@ -50,6 +52,7 @@ Shot fire(const std::string& model, double speed, double angle) {
     if (!sim.impacts().records().empty()) {
         s.logged_angle = sim.impacts().records().front().angle;
         s.logged_speed = sim.impacts().records().front().speed;
+        s.logged_position = sim.impacts().records().front().position;
     }
     return s;
 }
@@ -73,6 +76,11 @@ TEST(WearAngleSweep, EveryModelMatchesItsFormulaThroughThePipeline) {
                         angle, s.wear_mass, expected, s.logged_angle, s.logged_speed);
             EXPECT_EQ(s.impacts, 1u) << model << " " << angle;
             EXPECT_NEAR(s.logged_angle, angle, 0.05 * angle) << model;
+            // Aimed so that it touches the plate's middle: the grain's centre a radius above (0, 0, 0),
+            // to within the last step's travel.
+            EXPECT_NEAR(s.logged_position[0], 0.0, 1e-5) << model << " " << angle;
+            EXPECT_NEAR(s.logged_position[1], 0.0, 1e-12) << model << " " << angle;
+            EXPECT_NEAR(s.logged_position[2], radius, 1e-5) << model << " " << angle;
             if (expected == 0.0) {
                 EXPECT_EQ(s.wear_mass, 0.0) << model << " " << angle;  // Finnie at 90 degrees
             } else {

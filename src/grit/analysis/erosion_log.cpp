@@ -3,9 +3,36 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <limits>
+
 #include "grit/io/csv_file.hpp"
 
 namespace grit::analysis {
+
+template <int Dim>
+ErosionRecord erosion_record(const particles::SphParticles<Dim>& ps, Index i, double time, double reference_density) {
+    const auto& f = ps.fields();
+    ErosionRecord r;
+    r.time = time;
+    r.id = ps.id()[i];
+    r.material = ps.material()[i];
+    for (int d = 0; d < Dim; ++d) r.position[static_cast<std::size_t>(d)] = ps.position()[i][d];
+    r.mass = ps.mass()[i];
+    r.plastic_strain = f.template get<double>("plastic_strain").data()[i];
+    r.damage = f.template get<double>("damage").data()[i];
+    r.pressure = ps.pressure()[i];
+    r.von_mises = f.template get<double>("von_mises").data()[i];
+    r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
+    r.temperature = f.template get<double>("temperature").data()[i];
+    r.density = ps.density()[i];
+    r.density_ratio = r.density / reference_density;
+    r.speed = core::norm(ps.velocity()[i]);
+    return r;
+}
+
+template ErosionRecord erosion_record<2>(const particles::SphParticles<2>&, Index, double, double);
+template ErosionRecord erosion_record<3>(const particles::SphParticles<3>&, Index, double, double);
 
 void ErosionLog::open(const std::filesystem::path& file, int dimension, std::vector<std::string> material_names,
                       long rows) {

@@ -10,10 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "grit/particles/sph_particles.hpp"
+
 namespace grit::analysis {
 
 /// One removed solid particle. `cause`: "failed" (a ductile particle at D >= 1, eq. 36), "fragment" (fractured
-/// rock with no intact rock attached) or "rubble" (fractured rock dilated past the rubble density).
+/// rock with no intact rock attached), "rubble" (fractured rock dilated past the rubble density) or "outlet"
+/// (solid torn off before it failed, carried into an outlet or out of the domain).
 struct ErosionRecord {
     double time = 0.0;  ///< end of the step that removed it [s]
     std::int32_t id = -1;
@@ -34,6 +37,11 @@ struct ErosionRecord {
     /// then took at most `failure_surface_triaxiality`), 0 inside, -1 unknown.
     int surface = -1;
 };
+
+/// The record of solid particle i as it is now: where, its mass, state and speed (`cause`, the stress
+/// before a failure and `surface` are the caller's). The solid fields must be registered.
+template <int Dim>
+ErosionRecord erosion_record(const particles::SphParticles<Dim>& ps, Index i, double time, double reference_density);
 
 class ErosionLog {
 public:

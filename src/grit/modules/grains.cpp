@@ -138,7 +138,7 @@ void GrainsModule<Dim>::advance() {
             const bool touching = core::dot(x[g] - walls[w].point, walls[w].normal) < r[g];
             if (touching && !(mask[g] & bit))
                 state_.impacts.add({time + dt, grains.id()[g], wall_names_[w], core::norm(v[g]),
-                                    impact_angle<Dim>(v[g], walls[w].normal)});
+                                    impact_angle<Dim>(v[g], walls[w].normal), wear::impact_position(x[g])});
             mask[g] = touching ? (mask[g] | bit) : (mask[g] & ~bit);
         }
     }
@@ -195,7 +195,7 @@ void GrainsModule<Dim>::open_output(const sim::OutputPlace& place, bool restart)
             if (e.path().extension() == ".vtu") fs::remove(e.path());
     pvd_ = std::make_unique<io::PvdWriter>(place.dir / (place.name + "_grains.pvd"));
     if (restart) pvd_->restore(restored_pvd_);
-    state_.impacts.open(place.dir / "impacts.csv", restart ? static_cast<long>(state_.impacts.total()) : -1);
+    state_.impacts.open(place.dir / "impacts.csv", Dim, restart ? static_cast<long>(state_.impacts.total()) : -1);
 }
 
 template <int Dim>

@@ -78,12 +78,18 @@ void OpenBoundariesModule<Dim>::apply() {
             std::vector<Index> keep;
             keep.reserve(static_cast<std::size_t>(n - removed));
             for (Index i = 0; i < n; ++i) {
-                if (!gone[static_cast<std::size_t>(i)])
+                if (!gone[static_cast<std::size_t>(i)]) {
                     keep.push_back(i);
-                else if (ph[i] == solid)
+                } else if (ph[i] == solid) {  // torn off before it failed: eroded all the same
                     state_.ledger.eroded += m[i];
-                else
+                    const auto& material = spec.materials[static_cast<std::size_t>(ps.material()[i])];
+                    analysis::ErosionRecord r =
+                        analysis::erosion_record(ps, i, state_.clock.time, material.reference_density());
+                    r.cause = "outlet";
+                    state_.erosion.add(r);
+                } else {
                     state_.ledger.out += m[i];
+                }
             }
             ps.remove(keep);
         }

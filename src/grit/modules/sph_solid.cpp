@@ -224,13 +224,6 @@ void SolidModule<Dim>::remove_failed() {
     const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
     if (failed == 0) return;
     const double* m = ps.mass();
-    const auto& f = ps.fields();
-    const double* eps_p = f.template get<double>("plastic_strain").data();
-    const double* vm = f.template get<double>("von_mises").data();
-    const double* temperature = f.template get<double>("temperature").data();
-    const double* p = ps.pressure();
-    const auto* v = ps.velocity();
-    const std::int32_t* id = ps.id();
     std::vector<Index> keep;
     keep.reserve(static_cast<std::size_t>(n - failed));
     for (Index i = 0; i < n; ++i) {
@@ -240,28 +233,20 @@ void SolidModule<Dim>::remove_failed() {
             continue;
         }
         state_.ledger.eroded += m[i];
-        analysis::ErosionRecord r;
-        r.time = state_.clock.time;
-        r.id = id[i];
-        r.material = mat[i];
         const auto k = static_cast<std::size_t>(mat[i]);
         const bool brittle = brittle_[k];
+        analysis::ErosionRecord r =
+            analysis::erosion_record(ps, i, state_.clock.time, setup_.spec.materials[k].reference_density());
         r.cause = !brittle ? "failed" : rho[i] < rubble_density_[k] ? "rubble" : "fragment";
-        for (int d = 0; d < Dim; ++d) r.position[static_cast<std::size_t>(d)] = x[i][d];
-        r.mass = m[i];
-        r.plastic_strain = eps_p[i];
-        r.damage = damage[i];
-        r.pressure = p[i];
-        const double vm_before = g < failure_von_mises_.size() ? failure_von_mises_[g] : vm[i];
-        r.von_mises = brittle || std::isnan(vm_before) ? vm[i] : vm_before;
-        r.triaxiality = r.von_mises > 0.0 ? -r.pressure / r.von_mises : std::numeric_limits<double>::quiet_NaN();
-        r.temperature = temperature[i];
-        r.density = rho[i];
-        r.density_ratio = rho[i] / setup_.spec.materials[k].reference_density();
-        r.speed = core::norm(v[i]);
+        // A ductile failure zeroes the stress: the record keeps the von Mises stress it failed at.
+        const double vm_before = g < failure_von_mises_.size() ? failure_von_mises_[g] : r.von_mises;
+        if (!brittle && !std::isnan(vm_before)) {
+            r.von_mises = vm_before;
+            r.triaxiality = vm_before > 0.0 ? -r.pressure / vm_before : std::numeric_limits<double>::quiet_NaN();
+        }
         // The correction of this step's sums, while the particle set is the one they were made for.
         r.surface = workspace_generation_ == ps.generation() ? sph::at_solid_surface<Dim>(workspace_.correction[g]) : -1;
-        erosion_log_.add(r);
+        state_.erosion.add(r);
     }
     ps.remove(keep);
 }
@@ -286,29 +271,29 @@ template <int Dim>
 void SolidModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
     std::vector<std::string> names;
     for (const auto& m : setup_.spec.materials) names.push_back(m.name);
-    erosion_log_.open(place.dir / "eroded.csv", Dim, std::move(names),
-                      restart ? static_cast<long>(erosion_log_.total()) : -1);
+    state_.erosion.open(place.dir / "eroded.csv", Dim, std::move(names),
+                      restart ? static_cast<long>(state_.erosion.total()) : -1);
 }
 
 template <int Dim>
 void SolidModule<Dim>::write_output(const sim::OutputPlace& /*place*/) {
-    erosion_log_.flush();
+    state_.erosion.flush();
 }
 
 template <int Dim>
 void SolidModule<Dim>::flush_logs() {
-    erosion_log_.flush();
+    state_.erosion.flush();
 }
 
 template <int Dim>
 void SolidModule<Dim>::save(io::Hdf5Group& group) const {
-    group.write("eroded_particles", static_cast<std::int64_t>(erosion_log_.total()));
+    group.write("eroded_particles", static_cast<std::int64_t>(state_.erosion.total()));
 }
 
 template <int Dim>
 void SolidModule<Dim>::load(const io::Hdf5Group& group) {
     // A checkpoint from before the erosion log has no count: its eroded.csv, if any, is started again.
-    erosion_log_.restore(group.has_attribute("eroded_particles")
+    state_.erosion.restore(group.has_attribute("eroded_particles")
                              ? static_cast<std::size_t>(group.read_int("eroded_particles"))
                              : 0);
 }

@@ -5,7 +5,6 @@
 
 #include <vector>
 
-#include "grit/analysis/erosion_log.hpp"
 #include "grit/modules/sph_fluid.hpp"
 #include "grit/sph/solid_rates.hpp"
 
@@ -22,7 +21,7 @@ public:
     void initialise() override;
     void install(sim::Pipeline& pipeline) override;
     void output_values(std::vector<sim::OutputValue>& out) const override;
-    /// eroded.csv: every removed solid particle (analysis/erosion_log.hpp).
+    /// eroded.csv: every removed solid particle (state.erosion; analysis/erosion_log.hpp).
     void open_output(const sim::OutputPlace& place, bool restart) override;
     void write_output(const sim::OutputPlace& place) override;
     void flush_logs() override;
@@ -44,7 +43,6 @@ private:
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
     /// Per particle, this step: the von Mises stress before a ductile particle failed (its failure zeroes it).
     std::vector<double> failure_von_mises_;
-    analysis::ErosionLog erosion_log_;
 };
 
 extern template class SolidModule<2>;

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "grit/analysis/erosion_log.hpp"
 #include "grit/dem/dem_system.hpp"
 #include "grit/neighbors/particle_neighbors.hpp"
 #include "grit/particles/sph_particles.hpp"
@@ -39,6 +40,9 @@ struct State {
     std::unique_ptr<dem::DemSystem<Dim>> grains;
     /// First contacts of grains with targets.
     wear::ImpactLog impacts;
+    /// Solid particles removed: failed, detached, or carried out through an outlet (eroded.csv; the
+    /// solid module writes it).
+    analysis::ErosionLog erosion;
     Clock clock;
     MassLedger ledger;
 };

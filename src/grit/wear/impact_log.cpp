@@ -7,8 +7,10 @@
 
 namespace grit::wear {
 
-void ImpactLog::open(const std::filesystem::path& file, long rows) {
-    io::open_csv_log(file_, file, "time,grain,target,speed,angle", rows);
+void ImpactLog::open(const std::filesystem::path& file, int dimension, long rows) {
+    dimension_ = dimension;
+    io::open_csv_log(file_, file, dimension == 3 ? "time,grain,target,speed,angle,x,y,z" : "time,grain,target,speed,angle,x,y",
+                     rows);
     written_ = records_.size();
 }
 
@@ -16,7 +18,10 @@ void ImpactLog::flush() {
     if (!file_.is_open()) return;
     for (; written_ < records_.size(); ++written_) {
         const auto& r = records_[written_];
-        file_ << fmt::format("{:.9g},{},{},{:.9g},{:.6g}\n", r.time, r.grain, r.target, r.speed, r.angle);
+        file_ << fmt::format("{:.9g},{},{},{:.9g},{:.6g},{:.9g},{:.9g}", r.time, r.grain, r.target, r.speed, r.angle,
+                             r.position[0], r.position[1]);
+        if (dimension_ == 3) file_ << fmt::format(",{:.9g}", r.position[2]);
+        file_ << '\n';
     }
     file_.flush();
 }

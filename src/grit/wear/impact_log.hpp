@@ -1,8 +1,9 @@
 // The impact log: each first contact of a grain with a target (a plane wall, an SPH solid, SPH wall
-// particles; mesh walls later), with what wear models need: the relative speed and the impact angle.
-// Written to impacts.csv as it grows; wear models (Finnie, Bitter, Oka) will attach per-impact wear.
+// particles, a mesh wall), with what wear models need: the relative speed and the impact angle, and where
+// the grain was. Written to impacts.csv as it grows.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/core/vec.hpp"
 #include "grit/io/hdf5_file.hpp"
 
 namespace grit::wear {
@@ -22,7 +24,16 @@ struct ImpactRecord {
     std::string target;
     double speed = 0.0;  ///< [m/s]
     double angle = 0.0;  ///< [deg]
+    std::array<double, 3> position{};  ///< the grain's centre at the contact [m] (x, y in 2D)
 };
+
+/// The grain's centre as an impact record holds it.
+template <int Dim>
+std::array<double, 3> impact_position(const core::Vec<Dim>& x) noexcept {
+    std::array<double, 3> p{};
+    for (int d = 0; d < Dim; ++d) p[static_cast<std::size_t>(d)] = x[d];
+    return p;
+}
 
 class ImpactLog {
 public:
@@ -37,9 +48,10 @@ public:
     /// Every impact of the run, restarts included.
     std::size_t total() const noexcept { return earlier_ + records_.size(); }
 
-    /// Creates impacts.csv with its header, or, on a restart (`rows` >= 0), keeps its header and first
-    /// `rows` records (those written before the checkpoint) and appends after them.
-    void open(const std::filesystem::path& file, long rows = -1);
+    /// Creates impacts.csv with its header (the position as x, y in 2D; x, y, z in 3D), or, on a restart
+    /// (`rows` >= 0), keeps its header and first `rows` records (those written before the checkpoint)
+    /// and appends after them.
+    void open(const std::filesystem::path& file, int dimension, long rows = -1);
     /// Appends the records not yet written.
     void flush();
 
@@ -52,6 +64,7 @@ private:
     std::size_t written_ = 0;  ///< records_ already in the file
     std::size_t earlier_ = 0;  ///< impacts before the restart this run continues
     double first_speed_ = std::numeric_limits<double>::quiet_NaN();
+    int dimension_ = 2;
     std::ofstream file_;
 };
 
