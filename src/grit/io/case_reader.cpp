@@ -607,6 +607,8 @@ dem::GrainMaterial read_grain_material(const Section& s, const std::string& name
     return m;
 }
 
+namespace {
+
 /// Grain materials by name: [grain_materials.<name>] in the case first, else the built-in library.
 class GrainMaterialTable {
 public:
@@ -631,6 +633,8 @@ private:
     const Section& defined_;
     std::vector<dem::GrainMaterial>& used_;
 };
+
+}  // namespace
 
 /// A wear material: [wear_materials.<name>] (its keys on top of the built-in material `based_on`, if
 /// given), else the built-in one of that name.
