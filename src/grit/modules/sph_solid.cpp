@@ -272,7 +272,7 @@ void SolidModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) 
     std::vector<std::string> names;
     for (const auto& m : setup_.spec.materials) names.push_back(m.name);
     state_.erosion.open(place.dir / "eroded.csv", Dim, std::move(names),
-                      restart ? static_cast<long>(state_.erosion.total()) : -1);
+                        restart ? static_cast<long>(state_.erosion.total()) : -1);
 }
 
 template <int Dim>
@@ -294,8 +294,8 @@ template <int Dim>
 void SolidModule<Dim>::load(const io::Hdf5Group& group) {
     // A checkpoint from before the erosion log has no count: its eroded.csv, if any, is started again.
     state_.erosion.restore(group.has_attribute("eroded_particles")
-                             ? static_cast<std::size_t>(group.read_int("eroded_particles"))
-                             : 0);
+                               ? static_cast<std::size_t>(group.read_int("eroded_particles"))
+                               : 0);
 }
 
 template class SolidModule<2>;
