@@ -17,7 +17,7 @@ ErosionRecord erosion_record(const particles::SphParticles<Dim>& ps, Index i, do
     r.time = time;
     r.id = ps.id()[i];
     r.material = ps.material()[i];
-    for (int d = 0; d < Dim; ++d) r.position[static_cast<std::size_t>(d)] = ps.position()[i][d];
+    r.position = core::to_array3(ps.position()[i]);
     r.mass = ps.mass()[i];
     r.plastic_strain = f.template get<double>("plastic_strain").data()[i];
     r.damage = f.template get<double>("damage").data()[i];

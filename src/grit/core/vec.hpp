@@ -1,6 +1,7 @@
 // Small fixed-size vector used for positions, velocities and forces in 2D and 3D.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -80,6 +81,14 @@ Vec<Dim> to_vec(const std::vector<double>& v) {
     Vec<Dim> x{};
     for (int k = 0; k < Dim; ++k) x[k] = v[static_cast<std::size_t>(k)];
     return x;
+}
+
+/// x as three numbers, the last 0 in 2D (the rows of the CSV logs).
+template <int Dim>
+std::array<double, 3> to_array3(const Vec<Dim>& x) noexcept {
+    std::array<double, 3> a{};
+    for (int k = 0; k < Dim; ++k) a[static_cast<std::size_t>(k)] = x[k];
+    return a;
 }
 
 }  // namespace grit::core

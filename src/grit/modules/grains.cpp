@@ -138,7 +138,7 @@ void GrainsModule<Dim>::advance() {
             const bool touching = core::dot(x[g] - walls[w].point, walls[w].normal) < r[g];
             if (touching && !(mask[g] & bit))
                 state_.impacts.add({time + dt, grains.id()[g], wall_names_[w], core::norm(v[g]),
-                                    impact_angle<Dim>(v[g], walls[w].normal), wear::impact_position(x[g])});
+                                    impact_angle<Dim>(v[g], walls[w].normal), core::to_array3(x[g])});
             mask[g] = touching ? (mask[g] | bit) : (mask[g] & ~bit);
         }
     }

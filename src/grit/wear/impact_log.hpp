@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "grit/core/vec.hpp"
 #include "grit/io/hdf5_file.hpp"
 
 namespace grit::wear {
@@ -26,14 +25,6 @@ struct ImpactRecord {
     double angle = 0.0;  ///< [deg]
     std::array<double, 3> position{};  ///< the grain's centre at the contact [m] (x, y in 2D)
 };
-
-/// The grain's centre as an impact record holds it.
-template <int Dim>
-std::array<double, 3> impact_position(const core::Vec<Dim>& x) noexcept {
-    std::array<double, 3> p{};
-    for (int d = 0; d < Dim; ++d) p[static_cast<std::size_t>(d)] = x[d];
-    return p;
-}
 
 class ImpactLog {
 public:
