@@ -7,6 +7,10 @@
 
 namespace grit::analysis {
 
+namespace {
+constexpr double bin_margin = 0.25;  // [spacings]
+}  // namespace
+
 CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterRegion& region, double spacing) {
     CraterProfile out;
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -19,11 +23,15 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     for (Index i = 0; i < ps.size(); ++i) {
         if (phase[i] != solid) continue;
+        // A particle counts in its bin and in a neighbour bin within a quarter spacing: a column that
+        // drifts a little out of its bin still gives the bin its top (docs/theory.md, "Crater profile").
         const double u = (x[i][0] - region.x_min) / spacing;
-        if (u < 0.0 || u >= static_cast<double>(bins)) continue;
-        double& s = out.surface[static_cast<std::size_t>(u)];
         const double top = x[i][1] + 0.5 * spacing;
-        if (std::isnan(s) || top > s) s = top;
+        for (const double v : {u - bin_margin, u + bin_margin}) {
+            if (v < 0.0 || v >= static_cast<double>(bins)) continue;
+            double& s = out.surface[static_cast<std::size_t>(v)];
+            if (std::isnan(s) || top > s) s = top;
+        }
     }
     // Deepest point; an empty bin (all eroded) is not a depth we can measure, so it is skipped.
     std::size_t deepest = bins;

@@ -222,8 +222,11 @@ void build_jet(CaseSpec& c) {
     if (dim == 2 && !c.has_crater) {
         c.has_crater = true;
         c.crater_surface = surface;
-        c.crater_x_min = lo[0] + w;
-        c.crater_x_max = hi[0] - w;
+        // Between the outlets, in whole spacings from the specimen's edges: the profile's bins are then
+        // centred on the lattice's columns (analysis::analyse_crater).
+        const double inset = std::round(w / dx) * dx;
+        c.crater_x_min = lo[0] + inset;
+        c.crater_x_max = hi[0] - inset;
     }
     if (c.abrasive.enabled) build_abrasive(c, c.inlets.back());
 }

@@ -126,6 +126,10 @@ TEST(JetBuilder, BuildsTheNozzleOutletsClampsCraterAndDomain) {
     EXPECT_GT(c.clamps[1].max[0], 6e-3);
     EXPECT_TRUE(c.has_crater);
     EXPECT_DOUBLE_EQ(c.crater_surface, 0.0);
+    // Between the outlets (w = 0.96 mm of the 12 mm plate), whole spacings in from its edges, so that
+    // the profile's bins are centred on the lattice's columns.
+    EXPECT_NEAR(c.crater_x_min, -5e-3, 1e-12);
+    EXPECT_NEAR(c.crater_x_max, 5e-3, 1e-12);
     EXPECT_TRUE(c.remove_leaving);
     // The domain holds the specimen and the point upstream of the nozzle where grains join.
     EXPECT_LT(c.domain_min[0], -6e-3);

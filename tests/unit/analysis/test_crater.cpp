@@ -1,0 +1,101 @@
+// Crater profile, depth C_d and width C_w of a 2D solid surface on a lattice, with pits of known size
+// and with a column whose top particles have moved into the neighbour bin (the spike of 2026-11-27: a
+// bin that lost its column's top reported the top of a particle four rows down, C_d 0.41 mm for 0.12).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "grit/analysis/crater.hpp"
+
+namespace {
+
+using grit::Index;
+using grit::Phase;
+using grit::analysis::analyse_crater;
+
+constexpr double dx = 1e-4;
+
+struct Site {
+    int column, row;       // lattice indices: x = (column + 0.5) dx, y = (row + 0.5) dx, row < 0
+    double shift = 0.0;    // moved along x by this many spacings
+};
+
+/// A block 40 columns wide and 10 rows deep below y = 0, less the sites in `holes`, with the sites in
+/// `moved` displaced along x.
+grit::particles::SphParticles<2> block(const std::vector<std::array<int, 2>>& holes, const std::vector<Site>& moved = {}) {
+    grit::particles::SphParticles<2> ps;
+    for (int i = 0; i < 40; ++i)
+        for (int j = -10; j < 0; ++j) {
+            bool hole = false;
+            for (const auto& h : holes) hole |= h[0] == i && h[1] == j;
+            if (hole) continue;
+            double shift = 0.0;
+            for (const auto& m : moved)
+                if (m.column == i && m.row == j) shift = m.shift;
+            const Index a = ps.append(1);
+            ps.position()[a] = {{(i + 0.5 + shift) * dx, (j + 0.5) * dx}};
+            ps.phase()[a] = static_cast<std::int32_t>(Phase::solid);
+        }
+    return ps;
+}
+
+std::vector<std::array<int, 2>> pit(int first_column, int columns, int rows) {
+    std::vector<std::array<int, 2>> holes;
+    for (int i = first_column; i < first_column + columns; ++i)
+        for (int j = -rows; j < 0; ++j) holes.push_back({i, j});
+    return holes;
+}
+
+const grit::analysis::CraterRegion region{0.0, 0.0, 40 * dx};
+
+}  // namespace
+
+TEST(Crater, FlatSurfaceHasNoCrater) {
+    const auto c = analyse_crater(block({}), region, dx);
+    ASSERT_EQ(c.surface.size(), 40u);
+    for (const double s : c.surface) EXPECT_NEAR(s, 0.0, 1e-15);
+    EXPECT_NEAR(c.depth, 0.0, 1e-15);
+    EXPECT_EQ(c.width, 0.0);
+}
+
+TEST(Crater, RectangularPitGivesItsDepthAndWidth) {
+    // Six columns, three rows deep. C_w is where the profile, linear between bin centres, crosses
+    // y0 - dx/2: 2.5/3 of a bin outside each edge bin, so 5 + 2 (2.5/3) = 6.667 spacings.
+    const auto c = analyse_crater(block(pit(17, 6, 3)), region, dx);
+    EXPECT_NEAR(c.depth, 3.0 * dx, 1e-12);
+    EXPECT_NEAR(c.width, (5.0 + 5.0 / 3.0) * dx, 1e-12);
+}
+
+TEST(Crater, PitOneColumnWideIsResolved) {
+    // Bins centred on the columns: the neighbour columns are a spacing from the pit bin's centre,
+    // outside its widened edges (3/4 of a spacing).
+    const auto c = analyse_crater(block(pit(20, 1, 2)), region, dx);
+    EXPECT_NEAR(c.depth, 2.0 * dx, 1e-12);
+    EXPECT_GT(c.width, 1.0 * dx);
+}
+
+TEST(Crater, PitTwoColumnsWideIsResolved) {
+    const auto c = analyse_crater(block(pit(20, 2, 2)), region, dx);
+    EXPECT_NEAR(c.depth, 2.0 * dx, 1e-12);
+    EXPECT_GT(c.width, 2.0 * dx);
+}
+
+TEST(Crater, ColumnSlippingIntoTheNextBinIsNoPit) {
+    // Column 20's top four particles moved 0.55 spacings left, into bin 19: counted in their own bin
+    // only, bin 20's highest particle would be the fifth row's, 4 spacings down. The surface itself is
+    // flat, and a quarter spacing's margin keeps it so.
+    std::vector<Site> moved;
+    for (int j = -4; j < 0; ++j) moved.push_back({20, j, -0.55});
+    const auto c = analyse_crater(block({}, moved), region, dx);
+    EXPECT_NEAR(c.depth, 0.0, 1e-15);
+    EXPECT_EQ(c.width, 0.0);
+}
+
+TEST(Crater, BinWithNoSolidIsSkipped) {
+    // Column 5 eroded through: its bin has no surface (NaN) and is not a depth; the rest is flat.
+    const auto c = analyse_crater(block(pit(5, 1, 10)), region, dx);
+    EXPECT_TRUE(std::isnan(c.surface[5]));
+    EXPECT_NEAR(c.depth, 0.0, 1e-15);
+}
