@@ -24,6 +24,7 @@
 #include "grit/sim/version.hpp"
 #include "grit/wear/wear_models.hpp"
 #include "sweep.hpp"
+#include "thread_waits.hpp"
 
 extern char** environ;
 
@@ -145,6 +146,7 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    grit::app::use_short_spin_waits(argv);
     // Warnings of the library (spdlog's default logger) go to stderr, with grit's other messages; stdout
     // carries only what a command is asked for.
     spdlog::set_default_logger(spdlog::stderr_color_mt("grit"));

@@ -310,6 +310,19 @@ else
     fail "t0: run.log names the version, the estimate and the end" "$(cat "$T0/run.log" 2>&1)"
 fi
 
+# How the threads wait (app/thread_waits.hpp): grit runs itself again with GOMP_SPINCOUNT=1000 unless the
+# user chose; run.log names what the run had.
+T0W=$W/t0_waits
+env -u GOMP_SPINCOUNT -u OMP_WAIT_POLICY "$GRIT" run "$HYDRO" --end-time 0 --out "$T0W" --quiet >/dev/null 2>&1
+first=$(head -n 1 "$T0W/run.log" 2>/dev/null)
+env -u GOMP_SPINCOUNT OMP_WAIT_POLICY=active "$GRIT" run "$HYDRO" --end-time 0 --out "$T0W" --quiet >/dev/null 2>&1
+chosen=$(head -n 1 "$T0W/run.log" 2>/dev/null)
+if [[ $first == *", GOMP_SPINCOUNT=1000" && $chosen == *", OMP_WAIT_POLICY=active" ]]; then
+    pass "run: short spin waits unless the user chose (run.log: GOMP_SPINCOUNT=1000, then OMP_WAIT_POLICY=active)"
+else
+    fail "run: short spin waits unless the user chose" "first: $first; with OMP_WAIT_POLICY=active: $chosen"
+fi
+
 KEYS=(particles steps wall_time_s particle_steps_per_second end_time git_revision)
 if [[ ! -f $T0/summary.json ]]; then
     fail "t0: summary.json has the run's keys" "missing"

@@ -5,10 +5,25 @@
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/spdlog.h>
 
+#include <cstdlib>
+#include <string>
+
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/version.hpp"
 
 namespace grit::sim {
+
+namespace {
+
+/// How the OpenMP threads wait at a loop's end, as the environment sets it (grit's CLI sets
+/// GOMP_SPINCOUNT unless the user chose: app/thread_waits.hpp).
+std::string thread_waits() {
+    if (const char* s = std::getenv("GOMP_SPINCOUNT")) return std::string("GOMP_SPINCOUNT=") + s;
+    if (const char* p = std::getenv("OMP_WAIT_POLICY")) return std::string("OMP_WAIT_POLICY=") + p;
+    return "libgomp's default waits";
+}
+
+}  // namespace
 
 RunLog::RunLog(const std::filesystem::path& dir, bool append) {
     auto sink = std::make_shared<spdlog::sinks::basic_file_sink_mt>((dir / "run.log").string(), !append);
@@ -21,7 +36,8 @@ RunLog::~RunLog() = default;
 
 void RunLog::start(const io::CaseSpec& spec, Index particles, Index grains, const std::string& restarted_from,
                    long step, double time) {
-    info(fmt::format("grit {} (git {}), {} thread(s)", version, git_revision(), parallel::max_threads()));
+    info(fmt::format("grit {} (git {}), {} thread(s), {}", version, git_revision(), parallel::max_threads(),
+                     thread_waits()));
     info(fmt::format("case {} ('{}'), {}D", spec.source.string(), spec.title, spec.dimension));
     for (const auto& o : spec.overrides) info("--set " + o);
     if (!restarted_from.empty()) info(fmt::format("restarted from {} at step {} (t = {:.9g} s)", restarted_from, step, time));
