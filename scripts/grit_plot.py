@@ -98,7 +98,9 @@ def save(fig, path):
 
 
 def crater_profiles(folder, summary, plots, count):
-    """Top of the solid in bins of one spacing over the crater region, at `count` output times."""
+    """Top of the solid in bins of one spacing over the crater region, at `count` output times: the rule
+    of grit's crater analysis (src/grit/analysis/crater.cpp), each particle counted in every bin within a
+    quarter spacing of it, so that the curves show the C_d and C_w that series.csv gives."""
     region = summary.get("crater_region")
     pvd = folder / (summary["case"] + ".pvd")
     if not region or not pvd.exists():
@@ -118,11 +120,13 @@ def crater_profiles(folder, summary, plots, count):
         solid = v["phase"] == SOLID
         x, y = v["Points"][solid, 0], v["Points"][solid, 1] + 0.5 * dx
         top = np.full(len(centres), np.nan)
-        index = np.floor((x - region["x_min"]) / dx).astype(int)
-        inside = (index >= 0) & (index < len(centres))
-        for b, h in zip(index[inside], y[inside]):
-            if np.isnan(top[b]) or h > top[b]:
-                top[b] = h
+        u = (x - region["x_min"]) / dx
+        for margin in (-0.25, 0.25):
+            index = np.floor(u + margin).astype(int)
+            inside = (index >= 0) & (index < len(centres))
+            for b, h in zip(index[inside], y[inside]):
+                if np.isnan(top[b]) or h > top[b]:
+                    top[b] = h
         ax.plot(centres * 1e3, (top - region["surface"]) * 1e3, label=f"{time * 1e6:.3g} us")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("surface - original [mm]")

@@ -508,7 +508,7 @@ fi
 # --- checkpoints and restart: killed (SIGKILL) or interrupted (SIGINT) runs continue bit for bit -------
 
 DEMO=$ROOT/cases/demo.toml
-DEMO_SET=(--set time.end=1.2e-5 --set output.checkpoint_interval=1e-6 --threads 2 --quiet)
+DEMO_SET=(--set time.end=1.2e-5 --set output.interval=1e-6 --set output.checkpoint_interval=1e-6 --threads 2 --quiet)
 # Files that must be identical to the straight run's.
 same_outputs() {
     local a=$1 b=$2 f rel
@@ -608,7 +608,7 @@ else
 fi
 
 # A restart applies the checkpointed run's --set again: restarted with none of its own (the demo's own
-# time.end is 3e-5), the killed run still stops at 1.2e-5 with the straight run's outputs.
+# time.end is 5e-4), the killed run still stops at 1.2e-5 with the straight run's outputs.
 CARRIED=$W/carried
 if start_and_wait_for_checkpoint "$CARRIED"; then
     kill -KILL "$BG_PID" 2>/dev/null || true

@@ -118,7 +118,7 @@ TEST(Restart, EveryCaseContinuesBitForBit) {
 // Johnson-Cook damage and eroded particles, clamps and outlets all active at the checkpoint.
 TEST(Restart, DemoMidRunContinuesBitForBit) {
     grit::parallel::set_threads(2);
-    const auto spec = grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml", {"time.end=1.6e-5"});
+    const auto spec = grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml", {"time.end=1.6e-5", "output.interval=1e-6"});
     check_restart<2>(spec, 1.1e-5, 1.6e-5, false);
 }
 
@@ -126,7 +126,7 @@ TEST(Restart, DemoMidRunContinuesBitForBit) {
 // not rebuilt (or are still to be compacted), which a build from the saved positions would not reproduce.
 TEST(Restart, CompactedNeighbourListsContinueBitForBit) {
     grit::parallel::set_threads(2);
-    const auto spec = grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml", {"time.end=2e-5"});
+    const auto spec = grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml", {"time.end=2e-5", "output.interval=1e-6"});
     long middle = -1;
     {
         Simulation<2> probe(spec, grit::testing::in_memory());
