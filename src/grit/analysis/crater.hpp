@@ -22,10 +22,11 @@ struct CraterProfile {
 
 /// Profile of the solid's top surface in bins of width `spacing`: in each bin, the highest centre, plus
 /// half a spacing (its edge), of the solid particles within the bin widened by a quarter spacing on
-/// each side. With bins centred on the lattice's columns a pit one column wide is resolved. C_d = y0 - min(surface), or 0. C_w: from the deepest
-/// bin, the profile is followed left and right to where it first rises back to y0 - spacing/2 (the
-/// original surface, less the lattice's half spacing); the crossings are interpolated linearly and C_w
-/// is their distance (0 when there is no crater deeper than half a spacing).
+/// each side. With bins centred on the lattice's columns a pit one column wide is resolved.
+/// C_d = y0 - min(surface), or 0. C_w: from the deepest bin, the profile is followed left and right to
+/// where it first rises back to y0 - spacing/2 (the original surface, less the lattice's half spacing);
+/// the crossings are interpolated linearly and C_w is their distance (0 when there is no crater deeper
+/// than half a spacing).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
 }  // namespace grit::analysis
