@@ -175,7 +175,14 @@ def run_plots(folder, plots, profiles):
             axes[1].hist(data["angle"], bins=18, range=(0, 90))
             axes[1].set_xlabel("impact angle [deg] (90: normal)")
             if where:  # across the jet: how far the grains spread the impacts (the crater's width)
-                axes[2].hist(data["x"] * 1e3, bins=40)
+                x = data["x"] * 1e3
+                if "grain_collisions" in data.dtype.names:  # since 2026-11-27: deflected by another grain?
+                    hit = data["grain_collisions"] > 0
+                    axes[2].hist([x[~hit], x[hit]], bins=40, stacked=True,
+                                 label=["no grain met before", "met another grain before"])
+                    axes[2].legend(fontsize=8)
+                else:
+                    axes[2].hist(x, bins=40)
                 axes[2].set_xlabel("where the grain hit: x [mm]")
             save(fig, plots / "impacts.png")
     erosion_picture(folder, summary, plots)

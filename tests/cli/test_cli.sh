@@ -378,7 +378,7 @@ if [[ $RC -eq 0 ]]; then
 else
     fail "grains: the drop test runs to 0.12 s" "exit $RC: $(cat "$W/stderr")"
 fi
-if [[ -f $G/impacts.csv ]] && [[ $(head -n 1 "$G/impacts.csv") == "time,grain,target,speed,angle,x,y" ]] &&
+if [[ -f $G/impacts.csv ]] && [[ $(head -n 1 "$G/impacts.csv") == "time,grain,target,speed,angle,x,y,grain_collisions" ]] &&
     grep -q ',0,floor,' "$G/impacts.csv"; then
     pass "grains: impacts.csv has its header and the floor impact"
 else

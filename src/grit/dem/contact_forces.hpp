@@ -85,15 +85,17 @@ template <int Dim, class Law>
     }
 }
 
-/// What the pair pass adds up per grain: the forces of its pairs and their lever moments n x F_t (not
-/// yet times its radius).
+/// What the pair pass adds up per grain: the forces of its pairs, their lever moments n x F_t (not yet
+/// times its radius) and how many of them touch.
 template <int Dim>
 struct PairSum {
     core::Vec<Dim> force = core::Vec<Dim>::zero();
     Spin<Dim> lever_moment = zero_spin<Dim>();
+    std::int32_t touching = 0;
     PairSum& operator+=(const PairSum& o) noexcept {
         force += o.force;
         lever_moment += o.lever_moment;
+        touching += o.touching;
         return *this;
     }
 };
@@ -116,7 +118,8 @@ struct PairScratch {
 /// once) is evaluated by its grain of lower index, body a, with the tangential history of its entry;
 /// body a receives the force and b its exact negative (bit for bit), both the lever moment n x F_t (the
 /// torque of body k is R_k n x F_t for both: F_t and the lever flip together). Sets force[i] = the sum of
-/// i's pair forces and torque[i] = the sum of their lever moments (not yet times R_i) for every grain. A
+/// i's pair forces and torque[i] = the sum of their lever moments (not yet times R_i) for every grain,
+/// and grain_contact[i] (touches another grain), adding one to collisions[i] where that contact begins. A
 /// pair apart costs one distance test, and clears its history when it parts. finish_grain_forces() then
 /// completes every grain. (Completing each grain in the pair pass's last loop instead, saving a pass over
 /// the grains, was no faster: docs/performance.md.)
@@ -158,6 +161,7 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, C
         const std::int32_t mat_a = p.material[a];
         Vec fa = Vec::zero();
         Spin<Dim> ta = zero_spin<Dim>();
+        std::int32_t touching_a = 0;
         for (Index k = pairs.upper_begin(a); k < pairs.upper_end(a); ++k) {  // partners of higher index
             const Index b = p.partner[k];
             const Vec d = domain.nearest_image(p.x[b] - xa);
@@ -183,17 +187,27 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, C
             PairSum<Dim>& sum_b = share(b);
             sum_b.force -= res.force;
             sum_b.lever_moment += res.lever_moment;
+            ++sum_b.touching;
             fa += res.force;
             ta += res.lever_moment;
+            ++touching_a;
         }
         sum_a.force += fa;
         sum_a.lever_moment += ta;
+        sum_a.touching += touching_a;
     };
     Vec* force = grains.force();
     Spin<Dim>* torque = grains.torque();
+    std::int32_t* in_contact = grains.grain_contact();
+    std::int32_t* collisions = grains.collisions();
     auto finish = [&](Index i, const PairSum<Dim>& total) {
         force[i] = total.force;
         torque[i] = total.lever_moment;
+        // A contact that begins at this pass is a collision (a repeated pass over the same state, dt = 0,
+        // finds the flag already set).
+        const std::int32_t now = total.touching > 0;
+        collisions[i] += now & (in_contact[i] == 0);
+        in_contact[i] = now;
     };
     neighbors::sum_pairs_once(pairs, scratch.own, scratch.spill, visit, finish);
 }

@@ -46,7 +46,9 @@ constexpr double grain_inertia(double mass, double radius) noexcept {
 /// Grains with translation and rotation (first seed paper eq. 1). Fields (names as written to output):
 /// `id` (persistent, survives sorting and removal), `position`, `velocity`, `angular_velocity` (a scalar
 /// w_z in 2D, a vector in 3D), `force`, `torque` (accumulators, cleared at the start of each step's
-/// force stage), `radius`, `mass`, `inertia`, `material` (index into the system's material table).
+/// force stage), `radius`, `mass`, `inertia`, `material` (index into the system's material table),
+/// `collisions` (how many times the grain began to touch other grains; a deflected grain of Fig. 14) and
+/// `grain_contact` (1 while it touches one: set by the contact pass, kept to see the next one begin).
 template <int Dim>
 class GrainSet {
 public:
@@ -63,7 +65,9 @@ public:
           radius_(&fields_.add<double>("radius", 0.0, true)),
           mass_(&fields_.add<double>("mass", 0.0, true)),
           inertia_(&fields_.add<double>("inertia", 0.0, false)),
-          material_(&fields_.add<std::int32_t>("material", 0, true)) {}
+          material_(&fields_.add<std::int32_t>("material", 0, true)),
+          collisions_(&fields_.add<std::int32_t>("collisions", 0, true)),
+          grain_contact_(&fields_.add<std::int32_t>("grain_contact", 0, false)) {}
 
     GrainSet(const GrainSet& o) : fields_(o.fields_), next_id_(o.next_id_) { rebind(); }
     GrainSet& operator=(const GrainSet& o) {
@@ -115,6 +119,8 @@ public:
     double* mass() noexcept { return mass_->data(); }
     double* inertia() noexcept { return inertia_->data(); }
     std::int32_t* material() noexcept { return material_->data(); }
+    std::int32_t* collisions() noexcept { return collisions_->data(); }
+    std::int32_t* grain_contact() noexcept { return grain_contact_->data(); }
 
     const Vec* position() const noexcept { return position_->data(); }
     const Vec* velocity() const noexcept { return velocity_->data(); }
@@ -125,6 +131,8 @@ public:
     const double* mass() const noexcept { return mass_->data(); }
     const double* inertia() const noexcept { return inertia_->data(); }
     const std::int32_t* material() const noexcept { return material_->data(); }
+    const std::int32_t* collisions() const noexcept { return collisions_->data(); }
+    const std::int32_t* grain_contact() const noexcept { return grain_contact_->data(); }
 
     /// Points and every output field (grains/*.vtu).
     io::PointCloud snapshot() const {
@@ -149,6 +157,8 @@ private:
         mass_ = &fields_.get<double>("mass");
         inertia_ = &fields_.get<double>("inertia");
         material_ = &fields_.get<std::int32_t>("material");
+        collisions_ = &fields_.get<std::int32_t>("collisions");
+        grain_contact_ = &fields_.get<std::int32_t>("grain_contact");
     }
 
     particles::FieldRegistry fields_;
@@ -162,6 +172,8 @@ private:
     particles::Field<double>* mass_;
     particles::Field<double>* inertia_;
     particles::Field<std::int32_t>* material_;
+    particles::Field<std::int32_t>* collisions_;
+    particles::Field<std::int32_t>* grain_contact_;
     std::int32_t next_id_ = 0;
 };
 

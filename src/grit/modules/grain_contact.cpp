@@ -84,7 +84,7 @@ void GrainContactModule<Dim>::couple() {
                 kind == 1 ? std::string("wall") : materials[static_cast<std::size_t>(particles.material()[c.particle])].name;
             state_.impacts.add(
                 {time, grains.id()[g], target, core::norm(vrel), impact_angle<Dim>(vrel, normal[2 * gi + kind]),
-                 core::to_array3(grains.position()[g])});
+                 core::to_array3(grains.position()[g]), grains.collisions()[g]});
         }
         // Bits stay set while the target is near; new contacts set them.
         mask[g] = (mask[g] & ~(sph_wall_bit | sph_solid_bit)) | (mask[g] & near[gi]) | touching[gi];

@@ -58,6 +58,7 @@ private:
     long snapshot_index_ = 0;
     std::int64_t grains_out_ = 0;   ///< grains removed through outlets and the domain's faces
     double grain_mass_out_ = 0.0;   ///< their mass [kg] (per metre in 2D)
+    std::int64_t grain_collisions_out_ = 0;  ///< the collisions those grains had begun (grain_set.hpp)
 };
 
 extern template class GrainsModule<2>;

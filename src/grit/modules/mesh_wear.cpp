@@ -64,7 +64,8 @@ void MeshWearModule<Dim>::book() {
                 const wear::Impactor grain{grains.mass()[i], grains.radius()[i], material.density,
                                            material.youngs_modulus, material.poisson_ratio};
                 if (k.fresh) {
-                    state_.impacts.add({time, grains.id()[i], spec.name, speed, angle, core::to_array3(grains.position()[i])});
+                    state_.impacts.add({time, grains.id()[i], spec.name, speed, angle,
+                                        core::to_array3(grains.position()[i]), grains.collisions()[i]});
                     map_.add_impact(t, angle, speed);
                     map_.add_mass(t,
                                   spec.wear_material.density *

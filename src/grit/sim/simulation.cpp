@@ -48,8 +48,9 @@ bool has_fluid(const io::CaseSpec& spec) {
 using core::to_vec;
 
 // 2: grain-grain contact histories are held by the grain of lower index (was: lower id), one entry per
-// pair of the cut lists (dem::ContactHistory).
-constexpr std::int64_t checkpoint_format_version = 2;
+// pair of the cut lists (dem::ContactHistory). 3: grains carry `collisions` and `grain_contact`, the grains
+// module the collisions of the grains that left.
+constexpr std::int64_t checkpoint_format_version = 3;
 
 const char* phase_name(std::int32_t p) {
     switch (static_cast<Phase>(p)) {

@@ -9,7 +9,8 @@ namespace grit::wear {
 
 void ImpactLog::open(const std::filesystem::path& file, int dimension, long rows) {
     dimension_ = dimension;
-    io::open_csv_log(file_, file, dimension == 3 ? "time,grain,target,speed,angle,x,y,z" : "time,grain,target,speed,angle,x,y",
+    io::open_csv_log(file_, file, dimension == 3 ? "time,grain,target,speed,angle,x,y,z,grain_collisions"
+                                                   : "time,grain,target,speed,angle,x,y,grain_collisions",
                      rows);
     written_ = records_.size();
 }
@@ -21,7 +22,7 @@ void ImpactLog::flush() {
         file_ << fmt::format("{:.9g},{},{},{:.9g},{:.6g},{:.9g},{:.9g}", r.time, r.grain, r.target, r.speed, r.angle,
                              r.position[0], r.position[1]);
         if (dimension_ == 3) file_ << fmt::format(",{:.9g}", r.position[2]);
-        file_ << '\n';
+        file_ << fmt::format(",{}\n", r.grain_collisions);
     }
     file_.flush();
 }

@@ -24,6 +24,7 @@ struct ImpactRecord {
     double speed = 0.0;  ///< [m/s]
     double angle = 0.0;  ///< [deg]
     std::array<double, 3> position{};  ///< the grain's centre at the contact [m] (x, y in 2D)
+    std::int32_t grain_collisions = 0;  ///< times the grain had begun to touch another grain before
 };
 
 class ImpactLog {
@@ -39,7 +40,8 @@ public:
     /// Every impact of the run, restarts included.
     std::size_t total() const noexcept { return earlier_ + records_.size(); }
 
-    /// Creates impacts.csv with its header (the position as x, y in 2D; x, y, z in 3D), or, on a restart
+    /// Creates impacts.csv with its header (the position as x, y in 2D; x, y, z in 3D; then
+    /// grain_collisions), or, on a restart
     /// (`rows` >= 0), keeps its header and first `rows` records (those written before the checkpoint)
     /// and appends after them.
     void open(const std::filesystem::path& file, int dimension, long rows = -1);

@@ -180,6 +180,67 @@ TEST(DemSystem, RemovingGrainsKeepsTheOthersHistory) {
     EXPECT_EQ(sys.grains().size(), static_cast<Index>(keep.size()));
 }
 
+// Two discs closing head-on touch for many steps: each counts one collision, as the contact begins,
+// not one a step, and not again when the forces are evaluated twice at the same state (dt = 0). Sent
+// back at each other once apart, each counts a second.
+TEST(DemSystem, CountsACollisionOnceAsItsContactBegins) {
+    DemParameters<2> p;
+    DemSystem<2> sys(p, {soft_glass()});
+    const double r = 0.0015;
+    sys.add_grain(Vec<2>{{-r - 1e-5, 0.0}}, r, 0, Vec<2>{{0.05, 0.0}});
+    sys.add_grain(Vec<2>{{r + 1e-5, 0.0}}, r, 0, Vec<2>{{-0.05, 0.0}});
+    const auto& g = sys.grains();
+    auto gap = [&] { return std::abs(g.position()[1][0] - g.position()[0][0]) - 2.0 * r; };
+    const double dt = 1e-6;
+    for (int round = 1; round <= 2; ++round) {
+        int steps_in_contact = 0;
+        while (gap() > 0.0) sys.step(dt);  // closing
+        while (gap() <= 0.0) {             // touching
+            ++steps_in_contact;
+            sys.compute_forces(0.0);
+            for (Index i = 0; i < 2; ++i) {
+                ASSERT_EQ(g.collisions()[i], round) << "grain " << i << ", step " << steps_in_contact;
+                ASSERT_EQ(g.grain_contact()[i], 1);
+            }
+            sys.step(dt);
+        }
+        sys.step(dt);  // apart: the next pass sees it
+        EXPECT_GT(steps_in_contact, 10);
+        for (Index i = 0; i < 2; ++i) {
+            EXPECT_EQ(g.collisions()[i], round);
+            EXPECT_EQ(g.grain_contact()[i], 0);
+        }
+        // Back towards each other.
+        for (Index i = 0; i < 2; ++i) sys.grains().velocity()[i] = sys.grains().velocity()[i] * -1.0;
+    }
+}
+
+// Through the settling box's list rebuilds and re-sorts each grain's contact flag is what the geometry
+// says (it touches another grain), and it has counted at least as many collisions as it has contacts.
+TEST(DemSystem, ContactFlagsFollowTheGrainsThroughReSorting) {
+    DemSystem<3> sys = settling_box("hertz", 6);
+    for (int k = 0; k < 3000; ++k) sys.step(1e-5);
+    ASSERT_GT(sys.counters().rebuilds, 3);
+    const auto& g = sys.grains();
+    const Index n = g.size();
+    std::int64_t touching = 0, collisions = 0;
+    for (Index i = 0; i < n; ++i) {
+        int contacts = 0;
+        for (Index j = 0; j < n; ++j) {
+            if (j == i) continue;
+            const double reach = g.radius()[i] + g.radius()[j];
+            contacts += grit::core::norm2(sys.parameters().domain.nearest_image(g.position()[j] - g.position()[i])) <
+                        reach * reach;
+        }
+        ASSERT_EQ(g.grain_contact()[i], contacts > 0 ? 1 : 0) << "grain " << g.id()[i];
+        ASSERT_GE(g.collisions()[i], g.grain_contact()[i]);
+        touching += contacts > 0;
+        collisions += g.collisions()[i];
+    }
+    EXPECT_GT(touching, n / 2);  // a settled bed
+    EXPECT_GE(collisions, touching);
+}
+
 TEST(DemSystem, RejectsBadInput) {
     DemParameters<2> p;
     EXPECT_THROW(DemSystem<2>(p, {}), grit::core::InputError);
