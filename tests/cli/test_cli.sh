@@ -722,6 +722,31 @@ else
     skip "plot" "no python3 with matplotlib and numpy"
 fi
 
+# --- scripts/impact_summary.py: impacts of deflected grains against the others ------------------------------
+mkdir -p "$W/impsum"
+printf 'time,grain,target,speed,angle,x,y,grain_collisions\n%s\n%s\n%s\n%s\n' \
+    '1e-5,0,copper,200,90,1e-3,0,1' '2e-5,1,copper,100,60,-1e-3,0,2' '3e-5,2,copper,300,80,1e-4,0,0' \
+    '4e-5,3,copper,250,70,-2e-4,0,0' > "$W/impsum/impacts.csv"
+if [[ -z $JSON_PY ]]; then
+    skip "impact_summary.py" "no python3"
+elif out=$("$JSON_PY" "$ROOT/scripts/impact_summary.py" "$W/impsum" 2>&1) &&
+    grep -q 'target copper: 4 impacts, 2 (50 %) by grains that had met another grain' <<<"$out" &&
+    grep -q 'met a grain before: *2 | |x| median 1 mm, 90 % within 1 mm | speed 150 m/s' <<<"$out" &&
+    grep -q 'met none: *2 | |x| median 0.15 mm' <<<"$out"; then
+    pass "impact_summary.py: splits the impacts by grain_collisions, with where they landed"
+else
+    fail "impact_summary.py: splits the impacts by grain_collisions" "$out"
+fi
+printf 'time,grain,target,speed,angle,x,y\n1e-5,0,copper,200,90,1e-3,0\n' > "$W/impsum/impacts.csv"
+if [[ -n $JSON_PY ]]; then
+    if ! out=$("$JSON_PY" "$ROOT/scripts/impact_summary.py" "$W/impsum" 2>&1) &&
+        grep -q 'no grain_collisions column' <<<"$out"; then
+        pass "impact_summary.py: an impacts.csv without grain_collisions is refused: $out"
+    else
+        fail "impact_summary.py: an impacts.csv without grain_collisions is refused" "$out"
+    fi
+fi
+
 # --- eroded.csv: every removed solid particle, summing to the eroded mass; --dump-from -------------------
 grit run "$AWJ" --out "$W/eroded" --set time.end=6e-6 --set output.snapshots=false --threads 1 --set "$PLAIN_EQ35" \
     --quiet
