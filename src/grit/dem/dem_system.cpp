@@ -151,7 +151,18 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            grain_pair_pass<Dim>(grains_, pairs_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+            if (parameters_.grain_pairs) {
+                grain_pair_pass<Dim>(grains_, pairs_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+            } else {  // grains pass through one another: no pair forces, no contacts
+                Vec* f = grains_.force();
+                Spin<Dim>* t = grains_.torque();
+                std::int32_t* touching = grains_.grain_contact();
+                for_each_grain(grains_.size(), [&](Index i) {
+                    f[i] = Vec::zero();
+                    t[i] = zero_spin<Dim>();
+                    touching[i] = 0;
+                });
+            }
             if constexpr (Dim == 3) {
                 if (meshes_) {
                     meshes_->place(time);

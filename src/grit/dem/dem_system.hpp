@@ -31,6 +31,9 @@ struct DemParameters {
     /// more than skin/2. Negative: 0.2 x the largest diameter at the first build.
     double skin = -1.0;
     GrainDomain<Dim> domain;                       ///< periodic axes and their bounds
+    /// Grains touch each other (the pair pass); false: they pass through one another, and their walls,
+    /// SPH and coupling forces are all they feel.
+    bool grain_pairs = true;
 };
 
 /// Counters of the neighbour search and contacts (for benchmarks and diagnostics).

@@ -1199,6 +1199,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.dem.overlap_coefficient = d.number_or("overlap_coefficient", 0.0, in_range(0.0, 0.999));
         c.dem.solid_friction = d.number_or("solid_friction", -1.0, non_negative("[-]"));
         c.dem.wall_particle_contact = d.flag_or("wall_particle_contact", true);
+        c.dem.grain_grain_contact = d.flag_or("grain_grain_contact", true);
     }
     if (top.has("coupling")) {
         const Section k = top.section("coupling");

@@ -188,6 +188,9 @@ struct DemSpec {
     double solid_friction = -1.0;       ///< mu grain-SPH solid/wall; < 0: the grain material's
     /// Grains touch SPH wall particles (penalty contact); false where [[mesh]] walls stand for them.
     bool wall_particle_contact = true;
+    /// Grains touch each other; false lets them pass through one another (a probe of what their
+    /// collisions do, Figs. 14 and 21).
+    bool grain_grain_contact = true;
 };
 
 /// [coupling]: the unresolved fluid-grain coupling (first paper section 2.5), on in every case with

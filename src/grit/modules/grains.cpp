@@ -35,6 +35,7 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
     p.gravity = to_vec<Dim>(spec.gravity);
     p.skin = spec.dem.skin;
     p.domain = setup.periodic_box;  // domain.periodic: the same box as the SPH particles'
+    p.grain_pairs = spec.dem.grain_grain_contact;
     state.grains = std::make_unique<dem::DemSystem<Dim>>(p, spec.grain_materials);
     auto& system = *state.grains;
     system.grains().fields().template add<std::int32_t>("contact_targets", 0, false);

@@ -215,6 +215,27 @@ TEST(DemSystem, CountsACollisionOnceAsItsContactBegins) {
     }
 }
 
+// With grain_pairs = false (dem.grain_grain_contact) the two discs pass through each other unchanged
+// and count no collision.
+TEST(DemSystem, GrainsWithoutPairContactPassThroughEachOther) {
+    DemParameters<2> p;
+    p.grain_pairs = false;
+    DemSystem<2> sys(p, {soft_glass()});
+    const double r = 0.0015;
+    sys.add_grain(Vec<2>{{-r - 1e-5, 0.0}}, r, 0, Vec<2>{{1.0, 0.0}});
+    sys.add_grain(Vec<2>{{r + 1e-5, 0.0}}, r, 0, Vec<2>{{-1.0, 0.0}});
+    for (int k = 0; k < 2000; ++k) sys.step(1e-6);  // 2 mm of travel each: through and past each other
+    const auto& g = sys.grains();
+    for (Index i = 0; i < 2; ++i) {
+        const double v0 = g.id()[i] == 0 ? 1.0 : -1.0;
+        EXPECT_EQ(g.velocity()[i][0], v0);
+        EXPECT_EQ(g.collisions()[i], 0);
+        EXPECT_EQ(g.grain_contact()[i], 0);
+    }
+    const Index first = g.id()[0] == 0 ? 0 : 1;
+    EXPECT_GT(g.position()[first][0], g.position()[1 - first][0]);  // crossed
+}
+
 // Through the settling box's list rebuilds and re-sorts each grain's contact flag is what the geometry
 // says (it touches another grain), and it has counted at least as many collisions as it has contacts.
 TEST(DemSystem, ContactFlagsFollowTheGrainsThroughReSorting) {

@@ -510,6 +510,8 @@ TEST_F(CaseReaderTest, GrainsOnlyCaseNeedsNoSpacingAndTakesGarnet) {
     EXPECT_EQ(c.grain_walls[0].name, "plane0");
     EXPECT_DOUBLE_EQ(c.grain_walls[0].normal[1], 1.0);  // normalised
     EXPECT_EQ(c.dem.contact_law, "linear");
+    EXPECT_TRUE(c.dem.grain_grain_contact);
+    EXPECT_FALSE(read_ok(grains_2d, {"dem.grain_grain_contact=false"}).dem.grain_grain_contact);
 }
 
 TEST_F(CaseReaderTest, GrainSizeDistributionAndInlineMaterial) {
@@ -542,6 +544,7 @@ TEST_F(CaseReaderTest, FixedGrainsTakeNoVelocity) {
 TEST_F(CaseReaderTest, GrainErrorsNameKeyValueAndReason) {
     expect_error(grains_2d, {"grains[0].material=diamond"}, {"grains[0].material", "\"diamond\"", "garnet"});
     expect_error(grains_2d, {"dem.contact_law=jkr"}, {"dem.contact_law", "\"jkr\"", "\"linear\", \"hertz\""});
+    expect_error(grains_2d, {"dem.grain_grain_contact=2"}, {"dem.grain_grain_contact", "2"});
     expect_error(grains_2d, {"grains[0].diameter=-0.001"}, {"grains[0].diameter", "-0.001", "must be positive"});
     expect_error(replaced(grains_2d, "arrangement = \"single\"\nposition = [0.0, 0.01]\n",
                           "arrangement = \"lattice\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.01]\n"),
