@@ -186,7 +186,7 @@ void GrainsModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     }
     out.push_back(sim::OutputValue::count("impacts", static_cast<double>(state_.impacts.total())).summary_only());
     // Grain-grain collisions begun, each grain's counted (two free grains meeting count two), those of
-    // the grains that have left included: the deflections that widen an AWJ crater (Fig. 14).
+    // the grains that have left included: the deflections Fig. 14 credits with an AWJ crater's widening.
     const auto& grains = state_.grains->grains();
     std::int64_t collisions = grain_collisions_out_;
     for (Index g = 0; g < grains.size(); ++g) collisions += grains.collisions()[g];
