@@ -54,7 +54,7 @@ CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const doubl
     std::vector<Index> damaged;
     std::vector<core::Vec<Dim>> xd;
     for (Index i = 0; i < ps.size(); ++i) {
-        if (phase[i] != solid || !(damage[i] >= options.damage_threshold)) continue;
+        if (phase[i] != solid || !(damage[i] >= options.damage_threshold) || ps.is_image(i)) continue;
         damaged.push_back(i);
         xd.push_back(x[i]);
         out.damaged_area += m[i] / rho[i];

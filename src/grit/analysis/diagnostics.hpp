@@ -27,16 +27,18 @@ struct DiagnosticsSum {
     }
 };
 
-/// Deterministic (thread-count independent) diagnostics of every particle that is not a wall.
+/// Deterministic (thread-count independent) diagnostics of every particle that is not a wall (nor a
+/// symmetry plane's image).
 template <int Dim>
 Diagnostics<Dim> compute_diagnostics(const particles::SphParticles<Dim>& ps) {
     const auto* v = ps.velocity();
     const auto* m = ps.mass();
     const auto* phase = ps.phase();
+    const auto* id = ps.id();
     const auto wall = static_cast<std::int32_t>(Phase::wall);
     const auto s = parallel::sum(ps.size(), DiagnosticsSum<Dim>{}, [&](Index i) {
         DiagnosticsSum<Dim> d;
-        if (phase[i] == wall) return d;
+        if (phase[i] == wall || particles::SphParticles<Dim>::is_image_id(id[i])) return d;
         d.kinetic_energy = 0.5 * m[i] * core::norm2(v[i]);
         d.mass = m[i];
         d.momentum = v[i] * m[i];

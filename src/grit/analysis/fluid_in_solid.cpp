@@ -48,7 +48,7 @@ Index count_fluid_in_solids(const particles::SphParticles<Dim>& particles, doubl
 
     Index enclosed = 0;
     for (Index a = 0; a < n; ++a) {
-        if (phase[a] != fluid) continue;
+        if (phase[a] != fluid || particles.is_image(a)) continue;  // images of solids do enclose
         unsigned closed = 0;  // bit 2k: a solid on the +axis-k side; bit 2k+1: on the -axis-k side
         auto visit = [&](const std::vector<Index>& members) {
             for (const Index b : members) {

@@ -69,6 +69,7 @@ void OpenBoundariesModule<Dim>::apply() {
         std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
         parallel::for_each(n, [&](Index i) {
             if (ph[i] != fluid && (ph[i] != solid || (fixed && fixed[i]))) return;
+            if (ps.is_image(i)) return;  // goes with its source (modules/symmetry_plane)
             bool out = spec.remove_leaving && !sim::inside<Dim>(x[i], spec.domain_min, spec.domain_max);
             for (const auto& o : spec.outlets) out = out || sim::inside<Dim>(x[i], o.min, o.max);
             gone[static_cast<std::size_t>(i)] = out;

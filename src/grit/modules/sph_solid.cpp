@@ -181,7 +181,8 @@ void SolidModule<Dim>::remove_failed() {
     std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
     bool fractured_rock = false;
     parallel::for_each(n, [&](Index i) {
-        if (ph[i] != solid || damage[i] < 1.0) return;
+        // A symmetry plane's image goes with its source.
+        if (ph[i] != solid || damage[i] < 1.0 || ps.is_image(i)) return;
         const auto k = static_cast<std::size_t>(mat[i]);
         gone[static_cast<std::size_t>(i)] = brittle_[k] && rho[i] >= rubble_density_[k] ? 2 : 1;
     });
@@ -261,7 +262,9 @@ void SolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const std::int32_t* ph = ps.phase();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const double max_eps = parallel::max(ps.size(), 0.0, [&](Index i) { return ph[i] == solid ? eps_p[i] : 0.0; });
-    const double internal = parallel::sum(ps.size(), 0.0, [&](Index i) { return ph[i] == solid ? m[i] * e[i] : 0.0; });
+    const double internal = parallel::sum(ps.size(), 0.0, [&](Index i) {
+        return ph[i] == solid && !ps.is_image(i) ? m[i] * e[i] : 0.0;
+    });
     out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded));
     out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps));
     out.push_back(sim::OutputValue::real("internal_energy", internal));  // sum of m e over solids [J]

@@ -35,7 +35,7 @@ public:
     /// outlet that removes a particle every few steps, rebuilds (and re-sorts) were most of the builds.
     bool update(particles::SphParticles<Dim>& particles, double radius, double skin, bool force,
                 const PeriodicBox<Dim>& box = {}) {
-        const Index n = particles.size();
+        Index n = particles.size();
         if (!force && built_() && !valid_for(particles)) {
             if (const auto* keep = particles.kept_since(built_generation_)) {
                 list_.compact(*keep);
@@ -46,6 +46,10 @@ public:
         if (!force && valid_for(particles) &&
             list_.max_displacement2(particles.position(), n, box) < 0.25 * skin * skin)
             return false;
+        if (before_build_) {  // a symmetry plane makes its images for the new lists
+            before_build_(particles);
+            n = particles.size();
+        }
         if (box.any()) {
             Vec* x = particles.position();
             parallel::for_each(n, [&](Index i) { x[i] = box.wrap(x[i]); });
@@ -146,6 +150,10 @@ public:
         refresh_sides_ = std::move(refresh);
     }
 
+    /// Called at each build before the particles are sorted: the symmetry plane replaces its images
+    /// (modules/symmetry_plane.*), so that the lists hold the images of the particles near the plane.
+    void before_build(std::function<void(particles::SphParticles<Dim>&)> make) { before_build_ = std::move(make); }
+
 private:
     SideSeparation<Dim> sides(const particles::SphParticles<Dim>& particles) const {
         SideSeparation<Dim> s;
@@ -175,6 +183,7 @@ private:
     std::string normal_field_, far_field_;
     double far_cos_ = 0.5;
     std::function<void(particles::SphParticles<Dim>&)> refresh_sides_;
+    std::function<void(particles::SphParticles<Dim>&)> before_build_;
 };
 
 }  // namespace grit::neighbors

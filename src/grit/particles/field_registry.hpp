@@ -41,6 +41,12 @@ public:
     /// new[i] = old[source[i]]; reorders and removes in one pass.
     virtual void gather(const std::vector<Index>& source) = 0;
     virtual std::unique_ptr<FieldBase> clone() const = 0;
+    /// Entry `to` becomes the mirror image of entry `from` in the plane normal to `axis` through the
+    /// origin (a symmetry plane): vectors change the sign of their `axis` component, symmetric tensors
+    /// of their off-diagonal components in that row; scalars are copied.
+    virtual void mirror_copy(Index from, Index to, int axis) = 0;
+    /// The same for each pair (from[k], to[k]).
+    virtual void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) = 0;
     /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
     /// `phase` and `material` (the particles' phases and material indices, or null) apply the output
     /// scope: a real-valued column is written as NaN on the particles it means nothing for.
@@ -88,6 +94,13 @@ public:
         values_.swap(next);
     }
     std::unique_ptr<FieldBase> clone() const override { return std::make_unique<Field<T>>(*this); }
+    void mirror_copy(Index from, Index to, int axis) override {
+        values_[static_cast<std::size_t>(to)] = mirrored(values_[static_cast<std::size_t>(from)], axis);
+    }
+    void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) override {
+        for (std::size_t k = 0; k < from.size(); ++k)
+            values_[static_cast<std::size_t>(to[k])] = mirrored(values_[static_cast<std::size_t>(from[k])], axis);
+    }
     void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
                        const std::int32_t* material = nullptr) const override;
     void save(io::Hdf5Group& group) const override;
@@ -100,6 +113,17 @@ public:
 private:
     // Every field type is an array of int32 or of doubles (Vec, SymTensor3, Spin): its scalar type and
     // the number of scalars per particle.
+    static T mirrored(T value, int axis) {
+        if constexpr (std::is_same_v<T, core::Vec<2>> || std::is_same_v<T, core::Vec<3>>) {
+            value[axis] = -value[axis];
+        } else if constexpr (std::is_same_v<T, core::SymTensor3>) {
+            // xy couples axes 0 and 1, yz axes 1 and 2, zx axes 2 and 0.
+            if (axis != 2) value.xy = -value.xy;
+            if (axis != 0) value.yz = -value.yz;
+            if (axis != 1) value.zx = -value.zx;
+        }
+        return value;
+    }
     using Scalar = std::conditional_t<std::is_same_v<T, std::int32_t>, std::int32_t, double>;
     static constexpr std::size_t components = sizeof(T) / sizeof(Scalar);
     static_assert(sizeof(T) % sizeof(Scalar) == 0 && std::is_trivially_copyable_v<T>);
@@ -229,6 +253,13 @@ public:
     void resize(Index n) {
         for (auto& f : fields_) f->resize(n);
         size_ = n;
+    }
+    /// Entry `to` of every field becomes the mirror image of entry `from` (FieldBase::mirror_copy).
+    void mirror_copy(Index from, Index to, int axis) {
+        for (auto& f : fields_) f->mirror_copy(from, to, axis);
+    }
+    void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) {
+        for (auto& f : fields_) f->mirror_copy(from, to, axis);
     }
     void gather(const std::vector<Index>& source) {
         for (auto& f : fields_) f->gather(source);

@@ -62,6 +62,26 @@ public:
         ++generation_;
         return first;
     }
+    /// Grows the set by n mirror images (a symmetry plane's ghosts, modules/symmetry_plane.*): they take
+    /// no identifier of their own; the caller gives each the id image_id(source id) and its source's values.
+    Index append_images(Index n) {
+        const Index first = size();
+        fields_.resize(first + n);
+        ++generation_;
+        return first;
+    }
+    /// The id of the mirror image of the particle with id `source` (negative, so every module can tell an
+    /// image from a particle: images are not integrated for themselves, removed, counted or written).
+    static constexpr std::int32_t image_id(std::int32_t source) noexcept { return -2 - source; }
+    static constexpr std::int32_t image_source(std::int32_t image) noexcept { return -2 - image; }
+    static constexpr bool is_image_id(std::int32_t id) noexcept { return id <= -2; }
+    bool is_image(Index i) const noexcept { return is_image_id((*id_)[i]); }
+    /// How many images the set holds.
+    Index image_count() const noexcept {
+        Index n = 0;
+        for (Index i = 0; i < size(); ++i) n += is_image(i);
+        return n;
+    }
     /// Starts new particle i (from append) at position x, velocity v and density rho, with mass m, phase
     /// and material; the half-step velocity and density start equal to v and rho.
     void start(Index i, const Vec& x, const Vec& v, double rho, double m, Phase phase, std::int32_t material) {
@@ -131,6 +151,7 @@ public:
     double* mass() noexcept { return mass_->data(); }
     std::int32_t* phase() noexcept { return phase_->data(); }
     std::int32_t* material() noexcept { return material_->data(); }
+    std::int32_t* id() noexcept { return id_->data(); }
     /// A particle's identifier: unique, kept through sorting and removal (for tracking particles).
     const std::int32_t* id() const noexcept { return id_->data(); }
 
@@ -143,8 +164,16 @@ public:
     const std::int32_t* material() const noexcept { return material_->data(); }
 
     /// Points and every output field, ready for a snapshot writer; a field is NaN where its output scope
-    /// excludes the particle's phase and material (FieldBase::set_output_scope).
+    /// excludes the particle's phase and material (FieldBase::set_output_scope). Images are left out.
     io::PointCloud snapshot() const {
+        if (image_count() > 0) {
+            SphParticles copy(*this);
+            std::vector<Index> keep;
+            for (Index i = 0; i < size(); ++i)
+                if (!is_image(i)) keep.push_back(i);
+            copy.gather(keep);
+            return copy.snapshot();
+        }
         io::PointCloud cloud;
         cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
         const Vec* x = position();
