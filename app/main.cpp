@@ -83,6 +83,10 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         add("grains_injected", "grains fed", 1.0, "");
         add("impacts", "impacts", 1.0, "");
         if (!results.empty()) fmt::print("  {}\n", fmt::join(results, ", "));
+        if (spec.symmetry_plane)
+            fmt::print("  ({} runs the x >= 0 half: masses, energies and counts are the half's, double them for the "
+                       "whole; C_d and C_w are the whole crater's)\n",
+                       spec.symmetry_key);
     }
     return 0;
 }

@@ -119,6 +119,8 @@ def crater_profiles(folder, summary, plots, count):
         v = read_vtu(path)
         solid = v["phase"] == SOLID
         x, y = v["Points"][solid, 0], v["Points"][solid, 1] + 0.5 * dx
+        if region.get("mirror"):  # the x >= 0 half on a symmetry plane: its mirror image is the other half
+            x, y = np.concatenate([x, -x]), np.concatenate([y, y])
         top = np.full(len(centres), np.nan)
         u = (x - region["x_min"]) / dx
         for margin in (-0.25, 0.25):

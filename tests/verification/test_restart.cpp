@@ -269,3 +269,41 @@ TEST(Restart, TruncatedOrMissingCheckpointIsRefused) {
     EXPECT_THROW(s.load_checkpoint(scratch_file("text.h5")), grit::core::InputError);
     fs::remove(file);
 }
+
+// The half AWJ on its symmetry plane, grains in the water and on the copper: the images (saved with
+// the particles) and the grains' frictionless plane across the checkpoint.
+TEST(Restart, SymmetryPlaneMidRunContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case("awj_copper_2d/case.toml",
+                                               {"jet.symmetric=true", "time.end=1.2e-5", "output.interval=1e-6"});
+    check_restart<2>(spec, 1.0e-5, 1.2e-5, false, [](Simulation<2>& s) {
+        EXPECT_GT(s.particles().image_count(), 100);
+        EXPECT_GT(s.grains()->grains().size(), 0);
+    });
+}
+
+// A checkpoint of the half run does not continue the whole set-up, nor the other way round.
+TEST(Restart, CheckpointOfTheOtherSideOfASymmetryPlaneIsRefused) {
+    const fs::path file = scratch_file("symmetry_refused.h5");
+    const std::vector<std::string> brief = {"time.end=2e-7", "output.interval=1e-7"};
+    auto half_keys = brief;
+    half_keys.push_back("jet.symmetric=true");
+    for (const bool from_half : {true, false}) {
+        SCOPED_TRACE(from_half ? "half into whole" : "whole into half");
+        {
+            Simulation<2> s(grit::testing::load_case("awj_copper_2d/case.toml", from_half ? half_keys : brief),
+                            grit::testing::in_memory());
+            s.advance_to(1e-7);
+            s.save_checkpoint(file);
+        }
+        Simulation<2> other(grit::testing::load_case("awj_copper_2d/case.toml", from_half ? brief : half_keys),
+                            grit::testing::in_memory());
+        try {
+            other.load_checkpoint(file);
+            ADD_FAILURE() << "loaded";
+        } catch (const grit::core::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("domain.symmetry"), std::string::npos) << e.what();
+        }
+    }
+    fs::remove(file);
+}

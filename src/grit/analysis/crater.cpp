@@ -22,15 +22,18 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
     const auto* phase = ps.phase();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     for (Index i = 0; i < ps.size(); ++i) {
-        if (phase[i] != solid) continue;
+        if (phase[i] != solid || ps.is_image(i)) continue;
         // A particle counts in its bin and in a neighbour bin within a quarter spacing: a column that
         // drifts a little out of its bin still gives the bin its top (docs/theory.md, "Crater profile").
-        const double u = (x[i][0] - region.x_min) / spacing;
         const double top = x[i][1] + 0.5 * spacing;
-        for (const double v : {u - bin_margin, u + bin_margin}) {
-            if (v < 0.0 || v >= static_cast<double>(bins)) continue;
-            double& s = out.surface[static_cast<std::size_t>(v)];
-            if (std::isnan(s) || top > s) s = top;
+        for (const double at : {x[i][0], -x[i][0]}) {
+            const double u = (at - region.x_min) / spacing;
+            for (const double v : {u - bin_margin, u + bin_margin}) {
+                if (v < 0.0 || v >= static_cast<double>(bins)) continue;
+                double& s = out.surface[static_cast<std::size_t>(v)];
+                if (std::isnan(s) || top > s) s = top;
+            }
+            if (!region.mirror) break;
         }
     }
     // Deepest point; an empty bin (all eroded) is not a depth we can measure, so it is skipped.

@@ -11,6 +11,9 @@ namespace grit::analysis {
 struct CraterRegion {
     double surface = 0.0;          ///< original surface height y0 [m]
     double x_min = 0.0, x_max = 0.0;  ///< profiled range along x [m]
+    /// A symmetry plane at x = 0 (modules/symmetry_plane): each particle also stands at -x, so the
+    /// profile is the whole crater's (x_min = -x_max).
+    bool mirror = false;
 };
 
 struct CraterProfile {
@@ -26,7 +29,7 @@ struct CraterProfile {
 /// C_d = y0 - min(surface), or 0. C_w: from the deepest bin, the profile is followed left and right to
 /// where it first rises back to y0 - spacing/2 (the original surface, less the lattice's half spacing);
 /// the crossings are interpolated linearly and C_w is their distance (0 when there is no crater deeper
-/// than half a spacing).
+/// than half a spacing). Symmetry planes' images are left out (with `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
 }  // namespace grit::analysis

@@ -24,7 +24,8 @@ AbrasiveInlet<Dim>::AbrasiveInlet(const io::AbrasiveSpec& spec, const io::InletS
         motion_[k] = jet.motion.empty() ? 0.0 : jet.motion[static_cast<std::size_t>(k)];
     }
     across_ = section_axes<Dim>(direction_);
-    period_ = spec.spacing / jet_velocity_;
+    column_ = spec.feed_spacing > 0.0 ? spec.feed_spacing : spec.spacing;
+    period_ = column_ / jet_velocity_;
 }
 
 template <int Dim>
@@ -37,12 +38,20 @@ typename AbrasiveInlet<Dim>::Draw AbrasiveInlet<Dim>::draw(std::int64_t column) 
     // The grain lies in its column with at least one diameter of water before the next column's
     // front, so two grains never overlap as they enter (the reader checks y_dis >= the largest
     // diameter).
-    const double free_length = std::max(0.0, spec_.spacing - d.diameter);
-    d.entry_time = spec_.start + (static_cast<double>(column) * spec_.spacing + unit(rng) * free_length) / jet_velocity_;
+    const double free_length = std::max(0.0, column_ - d.diameter);
+    d.entry_time = spec_.start + (static_cast<double>(column) * column_ + unit(rng) * free_length) / jet_velocity_;
     // Across the jet: uniform over the part of the section that holds the whole grain.
     const double reach = std::max(0.0, jet_radius_ - 0.5 * d.diameter);
     d.offset = Vec::zero();
     if constexpr (Dim == 2) {
+        if (spec_.half_jet) {
+            // The half section of a symmetry plane at x = 0 (the inlet's centre is d_jet/4 off it): the
+            // centre's distance from the plane uniform over [0, d_jet/2 - d/2], as |x| in the whole jet.
+            const double from_plane = unit(rng) * std::max(0.0, 2.0 * jet_radius_ - 0.5 * d.diameter);
+            d.offset = Vec::zero();
+            d.offset[0] = from_plane - nozzle_[0];
+            return d;
+        }
         d.offset = across_[0] * ((2.0 * unit(rng) - 1.0) * reach);
     } else {
         for (;;) {

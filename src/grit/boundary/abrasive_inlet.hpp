@@ -51,7 +51,8 @@ private:
     double jet_velocity_, jet_radius_;
     Vec nozzle_, direction_, motion_;
     std::array<Vec, Dim - 1> across_;  ///< orthonormal directions spanning the nozzle section
-    double period_;        ///< y_dis / v_jet [s]
+    double column_;        ///< the liquid column of one grain: y_dis (2 y_dis on a symmetry plane's half jet) [m]
+    double period_;        ///< column_ / v_jet [s]
     std::int64_t next_column_ = 0;
 };
 

@@ -234,6 +234,9 @@ void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, c
     constexpr double infinite = std::numeric_limits<double>::infinity();
     const bool kick = half_kick != 0.0;
     const std::int32_t* fixed = fixed_flags(std::as_const(grains));
+    const auto& fields = std::as_const(grains).fields();
+    const std::int32_t* straddling =
+        fields.has(straddling_field) ? fields.template get<std::int32_t>(straddling_field).data() : nullptr;
     for_each_grain(grains.size(), [&](Index i) {
         Vec f = gravity * mass[i] + force[i];
         Spin<Dim> t = torque[i] * radius[i];
@@ -241,7 +244,7 @@ void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, c
             const PlaneWall<Dim>& wall = walls[s];
             Vec& h = wall_history[s][i];
             const double gap = core::dot(x[i] - wall.point, wall.normal);
-            if (gap >= radius[i]) {
+            if (gap >= radius[i] || (wall.frictionless && straddling && straddling[i] > 0)) {
                 h = Vec::zero();
                 continue;
             }
@@ -249,9 +252,10 @@ void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, c
             const Vec vab = v[i] + spin_cross<Dim>(w[i] * radius[i], n);
             const double sphere = contact_mass<Dim>(mass[i], radius[i]);
             const ContactKinematics c{radius[i] - gap, 0.0, radius[i], infinite, sphere, infinite};
-            const ContactResponse<Dim> res =
-                contact_response<Dim>(law, materials.at(material[i], wall.material), n, vab, c, h, dt,
-                                      disc_force_scale<Dim>(mass[i], sphere, infinite, infinite));
+            PairMaterial pair = materials.at(material[i], wall.material);
+            if (wall.frictionless) pair.friction = 0.0;
+            const ContactResponse<Dim> res = contact_response<Dim>(
+                law, pair, n, vab, c, h, dt, disc_force_scale<Dim>(mass[i], sphere, infinite, infinite));
             h = res.history;
             f += res.force;
             t += res.lever_moment * radius[i];

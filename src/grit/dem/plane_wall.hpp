@@ -14,6 +14,13 @@ struct PlaneWall {
     core::Vec<Dim> point = core::Vec<Dim>::zero();   ///< a point of the plane [m]
     core::Vec<Dim> normal = core::Vec<Dim>::zero();  ///< unit normal towards the grains
     std::int32_t material = 0;                       ///< index into the system's material table
+    /// No friction (a symmetry plane: a grain meets its mirror twin there, their surfaces moving together).
+    /// Grains flagged in the int32 grain field `straddling` (> 0) pass it: they lie across the plane
+    /// (modules/symmetry_plane).
+    bool frictionless = false;
 };
+
+/// The grain field of the grains a frictionless plane lets pass.
+inline constexpr const char* straddling_field = "straddling";
 
 }  // namespace grit::dem

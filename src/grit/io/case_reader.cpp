@@ -819,6 +819,38 @@ void read_periodic(CaseSpec& c, const Section& domain, const Section& dem,
         }
 }
 
+/// domain.symmetry = ["x"], or jet.symmetric: the plane x = 0 is a symmetry plane (modules/symmetry_plane).
+/// Refuses what the images do not support: a periodic x axis, ISPH, mesh walls.
+void read_symmetry(CaseSpec& c, const Section& domain) {
+    if (domain.has("symmetry")) {
+        const auto axes = read_axes(domain, "symmetry", c.dimension);
+        for (std::size_t k = 1; k < axes.size(); ++k)
+            if (axes[k])
+                domain.fail("symmetry", "supports the plane x = 0 only ([\"x\"]): lay the set-up so that its plane "
+                                        "of symmetry is x = 0");
+        c.symmetry_plane = c.symmetry_plane || axes[0];
+    }
+    if (c.jet.symmetric) c.symmetry_key = "jet.symmetric";
+    if (!c.symmetry_plane) return;
+    const std::string key = c.symmetry_key;
+    if (!c.periodic.empty() && c.periodic[0])
+        throw InputError(fmt::format("keys '{}' and '{}' = [\"x\", ...]: the x axis cannot be periodic and mirrored "
+                                     "at once", key, c.periodic_key));
+    if (c.fluid_solver == "isph")
+        throw InputError(fmt::format("key '{}': the symmetry plane supports fluid.solver = \"wcsph\" only", key));
+    if (!c.meshes.empty() || c.has_thin_walls())
+        throw InputError(fmt::format("key '{}': the symmetry plane does not mirror mesh walls ({}); lay the whole "
+                                     "set-up instead", key, !c.meshes.empty() ? c.meshes.front().key : "[[wall]] thin"));
+    if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
+        throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
+                                     "is run)", fmt::join(c.domain_max, ", "), key));
+    // The crater is the whole one: the profile of the half, mirrored.
+    if (c.has_crater) {
+        c.crater_mirror = true;
+        c.crater_x_min = -c.crater_x_max;
+    }
+}
+
 /// [jet]: the jet as the machine is set up. The geometry it implies is built by io/jet_builder.
 void read_jet(const Section& j, CaseSpec& c, MaterialTable& table) {
     JetSpec& jet = c.jet;
@@ -851,6 +883,7 @@ void read_jet(const Section& j, CaseSpec& c, MaterialTable& table) {
     jet.side_outlets = j.flag_or("side_outlets", true);
     jet.clamp_sides = j.flag_or("clamp_sides", true);
     jet.clamp_bottom = j.flag_or("clamp_bottom", false);
+    jet.symmetric = j.flag_or("symmetric", false);
 }
 
 /// [abrasive]: the grains fed into the jet; y_dis or M is completed by io/jet_builder.
@@ -1226,6 +1259,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     }
     if (c.has_jet) build_jet(c);
     read_periodic(c, domain, top.section("dem"), dem_periodic);
+    read_symmetry(c, domain);
 
     // Materials are read on first use; a defined but unused material is still checked and reported.
     for (const auto& name : materials.keys()) {

@@ -85,6 +85,9 @@ struct JetSpec {
     bool clamp_sides = true;          ///< jet.clamp_sides: the specimen clamped at its sides (unless [[clamp]] given)
     bool clamp_bottom = false;        ///< jet.clamp_bottom: and at its bottom (a thick block: no spall from a free face)
     bool derive_domain = false;       ///< no [domain]: the builder sets it around the specimen and nozzle
+    /// jet.symmetric: the jet's axis (x = 0) is a symmetry plane; the builder lays the x >= 0 half (2D,
+    /// normal incidence, no traverse) and domain.symmetry is on.
+    bool symmetric = false;
     double side_width = 0.0;          ///< width of the side outlets [m] (set by the builder)
 };
 
@@ -97,6 +100,12 @@ struct AbrasiveSpec {
     double spacing = 0.0;          ///< abrasive.spacing, y_dis [m] (given, or from the mass flow rate)
     double mass_flow_rate = 0.0;   ///< abrasive.mass_flow_rate, M of eq. (55) [kg/s] (given, or from y_dis)
     double volume_fraction = 0.0;  ///< zeta of eq. (54) [-]
+    /// The liquid column that holds one fed grain [m]: y_dis, or 2 y_dis on the half jet of a symmetry
+    /// plane (each grain has its mirror twin in the other half).
+    double feed_spacing = 0.0;
+    /// The half jet of a symmetry plane at x = 0 (2D): grain centres across [0, d_jet/2 - d/2] from the
+    /// plane, as the whole jet's |x|; a grain closer to the plane than its radius straddles it.
+    bool half_jet = false;
     std::string rate_key = "abrasive.spacing";  ///< the key that set the feed (for messages)
     std::uint64_t seed = 1;        ///< abrasive.seed
     double start = 0.0, stop = 1e300;  ///< abrasive.start, abrasive.stop [s] (default: the jet's)
@@ -280,6 +289,11 @@ struct CaseSpec {
 
     bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (2D)
     double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
+    bool crater_mirror = false;  ///< the profile is mirrored at x = 0 (a symmetry plane)
+    /// domain.symmetry = ["x"] (or jet.symmetric): the plane x = 0 is a symmetry plane; only x >= 0 is
+    /// laid and run (modules/symmetry_plane).
+    bool symmetry_plane = false;
+    std::string symmetry_key = "domain.symmetry";  ///< the key that set it (for messages)
     /// Crack analysis (damaged_area, crack_count): on for [cracks] or any JH-2 solid.
     bool has_cracks = false;
     double crack_damage_threshold = 0.5;  ///< cracks.damage_threshold: D at or above it is damaged [-]

@@ -53,14 +53,16 @@ double abrasive_lead(const CaseSpec& c) {
     return c.coupling.radius * largest + 2.0 * c.particle_spacing;
 }
 
-void build_abrasive(CaseSpec& c, const InletSpec& jet) {
+/// The feed of [abrasive] on the jet's inlet `jet`; `diameter` is the whole jet's (the inlet's is half of
+/// it on a symmetry plane).
+void build_abrasive(CaseSpec& c, const InletSpec& jet, double diameter) {
     AbrasiveSpec& a = c.abrasive;
     const auto& grain = c.grain_materials[static_cast<std::size_t>(a.material)];
     const double largest = std::visit([](const auto& d) { return d.largest(); }, a.size);
-    if (largest > jet.diameter)
+    if (largest > diameter)
         fail("abrasive.diameter", largest,
-             fmt::format("a grain is wider than the jet (jet.diameter = {} m); it cannot ride inside it", jet.diameter));
-    const double volume = abrasive_volume(c.dimension, mean_diameter(a.size), jet.diameter);
+             fmt::format("a grain is wider than the jet (jet.diameter = {} m); it cannot ride inside it", diameter));
+    const double volume = abrasive_volume(c.dimension, mean_diameter(a.size), diameter);
     const double densest = grain.density * jet.velocity * volume / largest;  // M at y_dis = the largest diameter
     if (a.rate_key == "abrasive.mass_flow_rate") {
         if (a.mass_flow_rate > densest)
@@ -79,9 +81,12 @@ void build_abrasive(CaseSpec& c, const InletSpec& jet) {
     }
     // Eq. (54): the grain's share of its column, pi d^2 / 4 over y_dis d_jet in 2D, the sphere over the
     // cylinder y_dis pi d_jet^2 / 4 in 3D.
-    const double column = c.dimension == 2 ? a.spacing * jet.diameter * jet.diameter
-                                           : a.spacing * std::numbers::pi * 0.25 * jet.diameter * jet.diameter;
+    const double column = c.dimension == 2 ? a.spacing * diameter * diameter
+                                           : a.spacing * std::numbers::pi * 0.25 * diameter * diameter;
     a.volume_fraction = volume / column;
+    // Half the jet holds half its grains: one per two columns, each with its twin across the plane.
+    a.feed_spacing = c.jet.symmetric ? 2.0 * a.spacing : a.spacing;
+    a.half_jet = c.jet.symmetric;
     a.inlet = static_cast<int>(c.inlets.size()) - 1;
     a.lead = abrasive_lead(c);
     // The grains join the run upstream of the nozzle: that point must lie in the domain.
@@ -96,6 +101,31 @@ void build_abrasive(CaseSpec& c, const InletSpec& jet) {
     }
 }
 
+/// jet.symmetric: a jet whose axis x = 0 is a plane of symmetry of the whole set-up.
+void check_symmetric(const CaseSpec& c, const std::vector<double>& lo, const std::vector<double>& hi) {
+    const JetSpec& j = c.jet;
+    const double dx = c.particle_spacing;
+    const std::string why = "with jet.symmetric the plane x = 0 must be a plane of symmetry of the set-up";
+    if (c.dimension != 2)
+        throw core::InputError("key 'jet.symmetric': the half jet is 2D only (a 3D jet's half disc is not laid yet)");
+    if (j.angle != 90.0) fail("jet.angle", j.angle, why + " (normal incidence, 90)");
+    if (j.traverse_speed != 0.0) fail("jet.traverse_speed", j.traverse_speed, why + " (no traverse)");
+    if (!j.target.empty() && j.target[0] != 0.0) fail("jet.target", j.target[0], why + " (the jet aimed at x = 0)");
+    if (std::abs(lo[0] + hi[0]) > 1e-9 * (hi[0] - lo[0]))
+        throw core::InputError(fmt::format("key '{}.min' = [{}]: {} (the specimen from x = -a to a; its max is [{}])",
+                                           c.solids.front().key, fmt::join(lo, ", "), why, fmt::join(hi, ", ")));
+    const long columns = std::lround(std::floor(j.diameter / dx + 1e-6));
+    if (columns % 2 != 0)
+        fail("jet.diameter", j.diameter,
+             fmt::format("holds {} particle columns (numerics.particle_spacing = {} m), an odd number: the plane x = 0 "
+                         "would cut the middle one; {}",
+                         columns, dx, "use a diameter of an even number of spacings"));
+    if (c.solids.size() > 1 || !c.inlets.empty() || !c.fluids.empty() || !c.walls.empty())
+        throw core::InputError(
+            "key 'jet.symmetric': the builder halves the jet and the specimen only; other [[solid]], [[inlet]], "
+            "[[fluid]] or [[wall]] blocks would need halving by hand (use domain.symmetry for such set-ups)");
+}
+
 }  // namespace
 
 void build_jet(CaseSpec& c) {
@@ -107,9 +137,11 @@ void build_jet(CaseSpec& c) {
         throw core::InputError(
             "key 'jet': the jet is aimed at the specimen, the first [[solid]], which must be a box (shape = \"box\"); "
             "use [[inlet]] for other set-ups");
-    const auto& specimen = c.solids.front();
-    const std::vector<double> lo = specimen.shape.min, hi = specimen.shape.max;
+    auto& specimen = c.solids.front();
+    std::vector<double> lo = specimen.shape.min, hi = specimen.shape.max;
     const double surface = hi[V];
+    if (j.symmetric) check_symmetric(c, lo, hi);
+    const double width = hi[0] - lo[0];  // the whole specimen's, also on a symmetry plane
 
     if (j.target.empty()) {
         j.target.assign(static_cast<std::size_t>(dim), 0.0);
@@ -141,6 +173,14 @@ void build_jet(CaseSpec& c) {
     in.position = nozzle;
     in.direction = direction;
     in.diameter = j.diameter;
+    if (j.symmetric) {  // the x >= 0 half: the specimen, the jet section and the columns of particles in it
+        c.symmetry_plane = true;
+        c.symmetry_key = "jet.symmetric";
+        lo[0] = 0.0;
+        specimen.shape.min[0] = 0.0;
+        in.diameter = 0.5 * j.diameter;
+        in.position[0] = 0.25 * j.diameter;
+    }
     in.velocity = j.velocity;
     in.material = j.material;
     in.start = j.start;
@@ -150,7 +190,7 @@ void build_jet(CaseSpec& c) {
     c.inlets.push_back(in);
 
     // Side zones: outlets above the specimen's edges and clamps along them (Fig. 9).
-    j.side_width = std::max(4.0 * dx, 0.08 * (hi[0] - lo[0]));
+    j.side_width = std::max(4.0 * dx, 0.08 * width);
     const double w = j.side_width;
     if (j.derive_domain) {
         c.domain_min.assign(static_cast<std::size_t>(dim), 0.0);
@@ -159,6 +199,8 @@ void build_jet(CaseSpec& c) {
             c.domain_min[k] = lo[k] - w - 2.0 * dx;
             c.domain_max[k] = hi[k] + w + 2.0 * dx;
         }
+        // On the plane: a particle that drifted across is reflected, not lost.
+        if (j.symmetric) c.domain_min[0] = -2.0 * dx;
         c.domain_min[V] = lo[V] - 2.0 * dx;
         double above = std::max(w, 4.0 * dx);
         if (c.abrasive.enabled)
@@ -181,6 +223,7 @@ void build_jet(CaseSpec& c) {
     if (j.side_outlets && c.outlets.empty() && top > surface) {
         for (std::size_t a = 0; a < V; ++a)
             for (const double edge : {lo[a], hi[a]}) {
+                if (j.symmetric && a == 0 && edge == lo[a]) continue;  // the plane, not an edge
                 OutletSpec o;
                 o.key = fmt::format("jet (side outlet at {} = {:.4g} m)", "xyz"[a], edge);
                 o.min = c.domain_min;
@@ -198,6 +241,7 @@ void build_jet(CaseSpec& c) {
     if (j.clamp_sides && !own_clamps) {
         for (std::size_t a = 0; a < V; ++a)
             for (const double edge : {lo[a], hi[a]}) {
+                if (j.symmetric && a == 0 && edge == lo[a]) continue;
                 OutletSpec cl;
                 cl.key = fmt::format("jet (side clamp at {} = {:.4g} m)", "xyz"[a], edge);
                 cl.min = lo;
@@ -227,8 +271,12 @@ void build_jet(CaseSpec& c) {
         const double inset = std::round(w / dx) * dx;
         c.crater_x_min = lo[0] + inset;
         c.crater_x_max = hi[0] - inset;
+        if (j.symmetric) {  // the whole crater, mirrored
+            c.crater_x_min = -c.crater_x_max;
+            c.crater_mirror = true;
+        }
     }
-    if (c.abrasive.enabled) build_abrasive(c, c.inlets.back());
+    if (c.abrasive.enabled) build_abrasive(c, c.inlets.back(), j.diameter);
 }
 
 }  // namespace grit::io

@@ -18,7 +18,7 @@ namespace {
 template <int Dim>
 analysis::CraterProfile crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing) {
     if constexpr (Dim == 2)
-        return analysis::analyse_crater(state.particles, {spec.crater_surface, spec.crater_x_min, spec.crater_x_max},
+        return analysis::analyse_crater(state.particles, {spec.crater_surface, spec.crater_x_min, spec.crater_x_max, spec.crater_mirror},
                                         spacing);
     else
         return {};  // the crater profile is 2D; the 3D kerf analysis comes with the 3D AWJ case

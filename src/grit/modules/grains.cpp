@@ -40,11 +40,19 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
     auto& system = *state.grains;
     system.grains().fields().template add<std::int32_t>("contact_targets", 0, false);
 
-    if (static_cast<int>(spec.grain_walls.size()) > max_grain_planes)
+    if (static_cast<int>(spec.grain_walls.size()) + (spec.symmetry_plane ? 1 : 0) > max_grain_planes)
         throw core::InputError(fmt::format("key 'grain_wall': at most {} plane walls", max_grain_planes));
     for (const auto& w : spec.grain_walls) {
         system.add_wall({to_vec<Dim>(w.point), to_vec<Dim>(w.normal), w.material});
         wall_names_.push_back(w.name);
+    }
+    if (spec.symmetry_plane) {  // a grain meets its mirror twin at x = 0 (modules/symmetry_plane)
+        system.grains().fields().template add<std::int32_t>(dem::straddling_field, -1, false);
+        core::Vec<Dim> normal = core::Vec<Dim>::zero();
+        normal[0] = 1.0;
+        const std::int32_t material = spec.abrasive.enabled ? spec.abrasive.material : 0;
+        system.add_wall({core::Vec<Dim>::zero(), normal, material, true});
+        wall_names_.push_back("symmetry_plane");
     }
     bool any_fixed = false;
     for (const auto& b : spec.grains) any_fixed |= b.fixed;
@@ -134,14 +142,22 @@ void GrainsModule<Dim>::advance() {
     const auto* x = grains.position();
     const auto* v = grains.velocity();
     const double* r = grains.radius();
+    const auto& fields = std::as_const(grains).fields();
+    const std::int32_t* straddling =
+        fields.has(dem::straddling_field) ? fields.template get<std::int32_t>(dem::straddling_field).data() : nullptr;
     for (Index g = 0; g < grains.size(); ++g) {
         for (std::size_t w = 0; w < walls.size(); ++w) {
             const std::int32_t bit = 1 << w;
-            const bool touching = core::dot(x[g] - walls[w].point, walls[w].normal) < r[g];
-            if (touching && !(mask[g] & bit))
-                state_.impacts.add({time + dt, grains.id()[g], wall_names_[w], core::norm(v[g]),
-                                    impact_angle<Dim>(v[g], walls[w].normal), core::to_array3(x[g]),
-                                    grains.collisions()[g]});
+            const bool touching = core::dot(x[g] - walls[w].point, walls[w].normal) < r[g] &&
+                                  !(walls[w].frictionless && straddling && straddling[g] > 0);
+            if (touching && !(mask[g] & bit)) {
+                if (walls[w].frictionless)  // a symmetry plane: the grain meets its mirror twin, a collision
+                    ++grains.collisions()[g];
+                else
+                    state_.impacts.add({time + dt, grains.id()[g], wall_names_[w], core::norm(v[g]),
+                                        impact_angle<Dim>(v[g], walls[w].normal), core::to_array3(x[g]),
+                                        grains.collisions()[g]});
+            }
             mask[g] = touching ? (mask[g] | bit) : (mask[g] & ~bit);
         }
     }

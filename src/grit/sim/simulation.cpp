@@ -27,6 +27,7 @@
 #include "grit/modules/sph_fluid.hpp"
 #include "grit/modules/thin_walls.hpp"
 #include "grit/modules/sph_solid.hpp"
+#include "grit/modules/symmetry_plane.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
 #include "grit/sim/particle_blocks.hpp"
@@ -108,6 +109,7 @@ std::string read_text(const std::filesystem::path& file) {
 }
 
 constexpr const char* periodic_state_key = "domain.periodic";
+constexpr const char* symmetry_state_key = "domain.symmetry";
 
 std::string periodic_axes(const io::CaseSpec& spec) {
     std::string axes;
@@ -130,6 +132,7 @@ std::vector<std::pair<std::string, std::string>> state_keys(const io::CaseSpec& 
         {"grain materials", grain_materials}};
     // Only where some axis is periodic, so that the checkpoints of other cases stay as they were.
     if (spec.any_periodic()) keys.emplace_back(periodic_state_key, periodic_axes(spec));
+    if (spec.symmetry_plane) keys.emplace_back(symmetry_state_key, "x");  // the particles are a half
     return keys;
 }
 
@@ -257,6 +260,9 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
         if (!spec_.grain_feeds.empty()) modules_.push_back(std::make_unique<modules::GrainFeedModule<Dim>>(state_, setup_));
         if (spec_.abrasive.enabled) modules_.push_back(std::make_unique<modules::AbrasiveFeedModule<Dim>>(state_, setup_));
     }
+    // After the modules whose forces and porosity act on the particles: its stages close each hook.
+    if (has_sph_ && spec_.symmetry_plane)
+        modules_.push_back(std::make_unique<modules::SymmetryPlaneModule<Dim>>(state_, setup_));
     if (!spec_.probes.empty()) {
         auto m = std::make_unique<modules::ProbesModule<Dim>>(state_, setup_);
         probes_ = m.get();
@@ -314,7 +320,7 @@ std::string Simulation<Dim>::find_unhealthy() const {
     const double vmax2 = setup_.max_speed * setup_.max_speed;
     const bool check_domain = !spec_.remove_leaving;
     const Index bad = parallel::first_index(ps.size(), [&](Index i) {
-        if (ph[i] == wall) return false;
+        if (ph[i] == wall || ps.is_image(i)) return false;  // an image is checked as its source
         return !core::all_finite(x[i]) || !core::all_finite(v[i]) || !(rho[i] > 0.0) || !std::isfinite(rho[i]) ||
                !std::isfinite(p[i]) || core::norm2(v[i]) > vmax2 ||
                (check_domain && !inside<Dim>(x[i], spec_.domain_min, spec_.domain_max));
@@ -438,7 +444,8 @@ std::vector<OutputValue> Simulation<Dim>::output_values() const {
         OutputValue::real("mass_in", state_.ledger.in),
         OutputValue::real("mass_out", state_.ledger.out),
         OutputValue::real("max_velocity", d.max_velocity),
-        OutputValue::count("particles", static_cast<double>(state_.particles.size())).series_only(),
+        OutputValue::count("particles", static_cast<double>(state_.particles.size() - state_.particles.image_count()))
+            .series_only(),
     };
     for (const auto& m : modules_) m->output_values(out);
     return out;
@@ -589,6 +596,10 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
             throw core::InputError(fmt::format("{}: domain.periodic was [{}] in the checkpointed run, now none; the "
                                                "saved state does not fit (start a fresh run instead)",
                                                where, h5.read_string(std::string("state_key ") + periodic_state_key)));
+        if (!spec_.symmetry_plane && h5.has_attribute(std::string("state_key ") + symmetry_state_key))
+            throw core::InputError(fmt::format("{}: the checkpointed run was the x >= 0 half on a symmetry plane ({}), "
+                                               "this one is not; the saved state does not fit (start a fresh run "
+                                               "instead)", where, symmetry_state_key));
         const auto run = h5.open_group("run");
         auto& clock = state_.clock;
         clock.time = run.read_double("time");
@@ -636,7 +647,7 @@ template <int Dim>
 RunSummary Simulation<Dim>::summarize(double wall_time, const std::string& status) const {
     RunSummary s;
     s.status = status;
-    s.particles = state_.particles.size();
+    s.particles = state_.particles.size() - state_.particles.image_count();
     s.steps = state_.clock.step;
     s.end_time = state_.clock.time;
     s.wall_time_s = wall_time;
@@ -664,7 +675,10 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["case_file"] = spec_.source.string();
     j["particle_spacing"] = spec_.particle_spacing;
     if (spec_.has_crater)  // where the crater is measured (for scripts/grit_plot.py's profiles)
-        j["crater_region"] = {{"surface", spec_.crater_surface}, {"x_min", spec_.crater_x_min}, {"x_max", spec_.crater_x_max}};
+        j["crater_region"] = {{"surface", spec_.crater_surface}, {"x_min", spec_.crater_x_min}, {"x_max", spec_.crater_x_max},
+                              {"mirror", spec_.crater_mirror}};
+    // The x >= 0 half of a symmetric set-up: masses, energies and counts are the half's.
+    if (spec_.symmetry_plane) j["symmetry_plane"] = "x";
     j["threads"] = parallel::max_threads();
     j["particles"] = s.particles;
     j["steps"] = s.steps;

@@ -99,3 +99,31 @@ TEST(Crater, BinWithNoSolidIsSkipped) {
     EXPECT_TRUE(std::isnan(c.surface[5]));
     EXPECT_NEAR(c.depth, 0.0, 1e-15);
 }
+
+// A symmetry plane at x = 0: the half block from x = 0 with a pit at its left edge (the plane), profiled
+// with `mirror`, is the whole block's profile of a pit centred on x = 0; images are left out.
+TEST(Crater, MirroredHalfIsTheWholeCrater) {
+    const auto half = block(pit(0, 3, 4));  // x from 0 to 40 dx: a pit 6 columns wide across the plane
+    auto with_images = half;
+    const Index n = with_images.size();
+    const Index first = with_images.append_images(3);  // images of some pit-edge and surface particles
+    for (Index k = 0; k < 3; ++k) {
+        with_images.fields().mirror_copy(k, first + k, 0);
+        with_images.id()[first + k] = grit::particles::SphParticles<2>::image_id(with_images.id()[k]);
+    }
+    ASSERT_EQ(with_images.image_count(), 3);
+    ASSERT_EQ(with_images.size(), n + 3);
+    grit::analysis::CraterRegion mirrored{0.0, -40 * dx, 40 * dx, true};
+    const grit::particles::SphParticles<2>* sets[] = {&half, &with_images};
+    for (const auto* ps : sets) {
+        const auto c = analyse_crater(*ps, mirrored, dx);
+        ASSERT_EQ(c.surface.size(), 80u);
+        for (std::size_t b = 0; b < 40; ++b) EXPECT_EQ(c.surface[b], c.surface[79 - b]) << b;
+        EXPECT_NEAR(c.depth, 4.0 * dx, 1e-12);
+        // Six columns four rows deep: the profile crosses y0 - dx/2 at 3.5/4 of a bin outside each edge bin.
+        EXPECT_NEAR(c.width, (5.0 + 2.0 * 3.5 / 4.0) * dx, 1e-12);
+    }
+    // Unmirrored, the half sees half a pit: its edge bin at the region's end.
+    const auto c = analyse_crater(half, region, dx);
+    EXPECT_LT(c.width, 4.0 * dx);
+}

@@ -273,3 +273,53 @@ TEST(DemSystem, RejectsBadInput) {
     EXPECT_THROW(sys.add_grain(Vec<2>::zero(), 1e-4, 3), grit::core::InputError);
     EXPECT_THROW(sys.add_wall({Vec<2>::zero(), Vec<2>::zero(), 0}), grit::core::InputError);
 }
+
+// A symmetry plane for grains (modules/symmetry_plane): a grain meets its mirror twin there, the two
+// surfaces moving together along the plane, so the plane holds the grain without friction: an oblique
+// impact keeps the tangential velocity and starts no spin, where a plane of the same material with
+// friction slows the sliding and spins the grain.
+TEST(DemSystem, FrictionlessPlaneKeepsTheTangentialVelocity) {
+    for (const bool frictionless : {true, false}) {
+        SCOPED_TRACE(frictionless ? "frictionless" : "with friction");
+        DemParameters<2> p;
+        DemSystem<2> sys(p, {soft_glass()});
+        const double r = 0.0015;
+        sys.add_wall({Vec<2>::zero(), Vec<2>{{1.0, 0.0}}, 0, frictionless});
+        sys.add_grain(Vec<2>{{r + 1e-5, 0.0}}, r, 0, Vec<2>{{-0.5, 0.5}});
+        const auto& g = sys.grains();
+        bool touched = false;
+        for (int k = 0; k < 20000 && !(touched && g.position()[0][0] > r + 1e-5); ++k) {
+            sys.step(1e-7);
+            touched |= g.position()[0][0] < r;
+        }
+        ASSERT_TRUE(touched);
+        EXPECT_GT(g.velocity()[0][0], 0.0);  // bounced off
+        if (frictionless) {
+            EXPECT_EQ(g.velocity()[0][1], 0.5);
+            EXPECT_EQ(g.angular_velocity()[0], 0.0);
+        } else {
+            EXPECT_LT(g.velocity()[0][1], 0.5 - 1e-3);
+            EXPECT_NE(g.angular_velocity()[0], 0.0);
+        }
+    }
+}
+
+// A grain flagged as straddling the frictionless plane (a grain on the jet's axis) passes it untouched;
+// the plane still holds the others.
+TEST(DemSystem, FrictionlessPlaneLetsStraddlingGrainsPass) {
+    DemParameters<2> p;
+    DemSystem<2> sys(p, {soft_glass()});
+    const double r = 0.0015;
+    sys.add_wall({Vec<2>::zero(), Vec<2>{{1.0, 0.0}}, 0, true});
+    sys.grains().fields().add<std::int32_t>(straddling_field, 0, false);
+    sys.add_grain(Vec<2>{{0.5 * r, 0.0}}, r, 0, Vec<2>{{-0.5, 0.0}});
+    sys.add_grain(Vec<2>{{0.5 * r, 0.01}}, r, 0, Vec<2>{{-0.5, 0.0}});
+    const auto& g = sys.grains();
+    const Index flagged = g.id()[0] == 0 ? 0 : 1;
+    sys.grains().fields().get<std::int32_t>(straddling_field)[flagged] = 1;
+    const int flagged_id = g.id()[flagged];
+    for (int k = 0; k < 100; ++k) sys.step(1e-6);
+    const Index a = g.id()[0] == flagged_id ? 0 : 1;
+    EXPECT_EQ(g.velocity()[a][0], -0.5);
+    EXPECT_GT(g.velocity()[1 - a][0], 0.0);  // pushed out
+}

@@ -293,3 +293,100 @@ TEST(JetBuilder, AnOverrideReplacesItsAlternative) {
     // In the file itself both are still an error.
     EXPECT_TRUE(has(error_of(replaced(awj_case, "velocity = 500.0", "velocity = 500.0\npressure = 2e8")), "not both"));
 }
+
+// jet.symmetric: the x >= 0 half of the set-up (modules/symmetry_plane): the specimen from x = 0, the
+// jet's half section at x = d/4 holding the full jet's right-hand particle columns, one side outlet and
+// clamp, the crater mirrored, and one grain per two columns (each has its twin across the plane), with
+// M, y_dis and zeta those of the whole jet.
+TEST(JetBuilder, SymmetricJetLaysTheHalf) {
+    const CaseSpec whole = read(awj_case);
+    const CaseSpec c = read(awj_case, {"jet.symmetric=true"});
+    EXPECT_TRUE(c.symmetry_plane);
+    EXPECT_EQ(c.symmetry_key, "jet.symmetric");
+    EXPECT_DOUBLE_EQ(c.solids.front().shape.min[0], 0.0);
+    EXPECT_DOUBLE_EQ(c.solids.front().shape.max[0], 6e-3);
+    const auto& in = c.inlets.front();
+    EXPECT_DOUBLE_EQ(in.diameter, 0.5e-3);
+    EXPECT_DOUBLE_EQ(in.position[0], 0.25e-3);
+    EXPECT_DOUBLE_EQ(in.position[1], whole.inlets.front().position[1]);
+    ASSERT_EQ(c.outlets.size(), 1u);
+    EXPECT_DOUBLE_EQ(c.outlets[0].min[0], whole.outlets[1].min[0]);  // the right one, as it was
+    ASSERT_EQ(c.clamps.size(), 1u);
+    EXPECT_DOUBLE_EQ(c.clamps[0].min[0], whole.clamps[1].min[0]);
+    EXPECT_TRUE(c.crater_mirror);
+    EXPECT_DOUBLE_EQ(c.crater_x_min, whole.crater_x_min);
+    EXPECT_DOUBLE_EQ(c.crater_x_max, whole.crater_x_max);
+    EXPECT_LT(c.domain_min[0], 0.0);  // a particle that drifts across is reflected, not lost
+    EXPECT_DOUBLE_EQ(c.domain_max[0], whole.domain_max[0]);
+    EXPECT_DOUBLE_EQ(c.abrasive.mass_flow_rate, whole.abrasive.mass_flow_rate);
+    EXPECT_DOUBLE_EQ(c.abrasive.spacing, whole.abrasive.spacing);
+    EXPECT_DOUBLE_EQ(c.abrasive.volume_fraction, whole.abrasive.volume_fraction);
+    EXPECT_DOUBLE_EQ(c.abrasive.feed_spacing, 2.0 * whole.abrasive.spacing);
+    EXPECT_DOUBLE_EQ(whole.abrasive.feed_spacing, whole.abrasive.spacing);
+    EXPECT_FALSE(whole.symmetry_plane);
+}
+
+TEST(JetBuilder, SymmetricJetNeedsASymmetricSetUp) {
+    const std::vector<std::string> on = {"jet.symmetric=true"};
+    auto with = [&](std::string o) {
+        auto v = on;
+        v.push_back(std::move(o));
+        return v;
+    };
+    EXPECT_TRUE(has(error_of(awj_case, with("jet.angle=60")), "key 'jet.angle' = 60"));
+    EXPECT_TRUE(has(error_of(awj_case, with("jet.traverse_speed=0.03")), "key 'jet.traverse_speed' = 0.03"));
+    EXPECT_TRUE(has(error_of(awj_case, with("jet.target=[1e-3, 0.0]")), "key 'jet.target' = 0.001"));
+    const std::string odd = error_of(awj_case, with("jet.diameter=0.9e-3"));
+    EXPECT_TRUE(has(odd, "key 'jet.diameter' = 0.0009")) << odd;
+    EXPECT_TRUE(has(odd, "9 particle columns")) << odd;
+    const std::string off_centre = error_of(replaced(awj_case, "min = [-6.0e-3, -4.0e-3]", "min = [-5.0e-3, -4.0e-3]"), on);
+    EXPECT_TRUE(has(off_centre, "key 'solid[0].min'")) << off_centre;
+    std::string text3 = replaced(awj_case, "dimension = 2", "dimension = 3");
+    text3 = replaced(text3, "min = [-6.0e-3, -4.0e-3]", "min = [-6.0e-3, -6.0e-3, -4.0e-3]");
+    text3 = replaced(text3, "max = [6.0e-3, 0.0]", "max = [6.0e-3, 6.0e-3, 0.0]");
+    const std::string three_d = error_of(text3, on);
+    EXPECT_TRUE(has(three_d, "key 'jet.symmetric'")) << three_d;
+}
+
+// domain.symmetry: the plane x = 0 only, not with a periodic x axis nor ISPH.
+TEST(CaseReader, SymmetryPlaneKeys) {
+    const std::string boxed = awj_case + R"(
+[domain]
+min = [-0.2e-3, -4.5e-3]
+max = [6.5e-3, 4.0e-3]
+)";
+    const std::string half = replaced(boxed, "min = [-6.0e-3, -4.0e-3]", "min = [0.0, -4.0e-3]");
+    const CaseSpec c = read(half, {"domain.symmetry=[\"x\"]"});
+    EXPECT_TRUE(c.symmetry_plane);
+    EXPECT_EQ(c.symmetry_key, "domain.symmetry");
+    EXPECT_TRUE(c.crater_mirror);
+    EXPECT_DOUBLE_EQ(c.crater_x_min, -c.crater_x_max);
+    const std::string y = error_of(half, {"domain.symmetry=[\"y\"]"});
+    EXPECT_TRUE(has(y, "key 'domain.symmetry'")) << y;
+    EXPECT_TRUE(has(y, "x = 0 only")) << y;
+    const std::string isph = error_of(half, {"domain.symmetry=[\"x\"]", "fluid.solver=\"isph\""});
+    EXPECT_TRUE(has(isph, "key 'domain.symmetry'")) << isph;
+}
+
+// The half jet of a symmetry plane (jet.symmetric): one grain per two columns, the centre's distance
+// from the plane uniform over [0, d_jet/2 - d/2] (the whole jet's |x|), so a quarter of the 0.2 mm grains
+// of a 1 mm jet start within a radius of the plane (r / (d_jet/2 - r)) and straddle it.
+TEST(AbrasiveInlet, HalfJetFeedsTheWholeJetsDistanceFromTheAxis) {
+    const CaseSpec c = read(awj_case, {"jet.symmetric=true"});
+    ASSERT_TRUE(c.abrasive.half_jet);
+    grit::boundary::AbrasiveInlet<2> inlet(c.abrasive, c.inlets.front());
+    const double period = c.abrasive.feed_spacing / c.inlets.front().velocity;
+    std::vector<double> x;
+    for (double t = 0.0; t < 4000 * period; t += 0.25 * period)
+        for (const auto& g : inlet.emit(t, 0.25 * period)) x.push_back(g.position[0]);
+    ASSERT_NEAR(static_cast<double>(x.size()), 4000.0, 1.0);
+    double mean = 0.0, straddling = 0.0;
+    for (const double xi : x) {
+        EXPECT_GE(xi, 0.0);
+        EXPECT_LE(xi, 0.4e-3 + 1e-15);
+        mean += xi / static_cast<double>(x.size());
+        straddling += xi < 1e-4 ? 1.0 / static_cast<double>(x.size()) : 0.0;
+    }
+    EXPECT_NEAR(mean, 0.2e-3, 0.01e-3);     // 4000 uniform draws: standard error 0.0018 mm
+    EXPECT_NEAR(straddling, 0.25, 0.025);  // standard error 0.007
+}
