@@ -126,7 +126,7 @@ template <int Dim>
 void SymmetryPlaneModule<Dim>::refresh() {
     auto& ps = state_.particles;
     // A particle that drifted across the plane: its twin drifted across the other way; take the twin's
-    // place. Clamped particles stay where they are held.
+    // place (walls do not move).
     {
         auto* x = ps.position();
         auto& fields = ps.fields();
