@@ -71,7 +71,7 @@ public:
         return first;
     }
     /// The id of the mirror image of the particle with id `source` (negative, so every module can tell an
-    /// image from a particle: images are not integrated for themselves, removed, counted or written).
+    /// image from a particle: images are not removed, counted or written for themselves).
     static constexpr std::int32_t image_id(std::int32_t source) noexcept { return -2 - source; }
     static constexpr std::int32_t image_source(std::int32_t image) noexcept { return -2 - image; }
     static constexpr bool is_image_id(std::int32_t id) noexcept { return id <= -2; }

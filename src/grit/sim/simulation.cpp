@@ -592,14 +592,15 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
                                                    "does not fit (start a fresh run instead)",
                                                    where, key, saved, value));
         }
-        if (!spec_.any_periodic() && h5.has_attribute(std::string("state_key ") + periodic_state_key))
-            throw core::InputError(fmt::format("{}: domain.periodic was [{}] in the checkpointed run, now none; the "
-                                               "saved state does not fit (start a fresh run instead)",
-                                               where, h5.read_string(std::string("state_key ") + periodic_state_key)));
-        if (!spec_.symmetry_plane && h5.has_attribute(std::string("state_key ") + symmetry_state_key))
-            throw core::InputError(fmt::format("{}: the checkpointed run was the x >= 0 half on a symmetry plane ({}), "
-                                               "this one is not; the saved state does not fit (start a fresh run "
-                                               "instead)", where, symmetry_state_key));
+        // The keys only some runs record: one the checkpoint has and this run has not does not fit either.
+        const auto current = state_keys(spec_);
+        for (const char* key : {periodic_state_key, symmetry_state_key}) {
+            const bool here = std::any_of(current.begin(), current.end(), [&](const auto& k) { return k.first == key; });
+            if (!here && h5.has_attribute(std::string("state_key ") + key))
+                throw core::InputError(fmt::format("{}: {} was [{}] in the checkpointed run, now none; the saved state "
+                                                   "does not fit (start a fresh run instead)",
+                                                   where, key, h5.read_string(std::string("state_key ") + key)));
+        }
         const auto run = h5.open_group("run");
         auto& clock = state_.clock;
         clock.time = run.read_double("time");
