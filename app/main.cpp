@@ -24,7 +24,6 @@
 #include "grit/sim/version.hpp"
 #include "grit/wear/wear_models.hpp"
 #include "sweep.hpp"
-#include "thread_waits.hpp"
 
 extern char** environ;
 
@@ -35,7 +34,7 @@ constexpr int exit_blow_up = 3;
 
 int run_command(const std::string& case_file, const std::vector<std::string>& sets, const std::string& out,
                 double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart,
-                long dump_from) {
+                long dump_from, bool fixed_threads) {
     // A restart applies the checkpointed run's --set first (a sweep's parameter, a changed grain size), so
     // that it continues the same physics; its own --set come after and win.
     std::vector<std::string> overrides;
@@ -53,6 +52,7 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     options.output_dir = out.empty() ? std::filesystem::path("output") / spec.name : std::filesystem::path(out);
     options.quiet = quiet;
     options.dump_from_step = dump_from;
+    options.adapt_threads = !fixed_threads;
     if (!restart.empty()) {
         // A restart continues the files of the run the checkpoint belongs to (its folder holds checkpoints/).
         options.restart = restart;
@@ -150,7 +150,6 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    grit::app::use_short_spin_waits(argv);
     // Warnings of the library (spdlog's default logger) go to stderr, with grit's other messages; stdout
     // carries only what a command is asked for.
     spdlog::set_default_logger(spdlog::stderr_color_mt("grit"));
@@ -165,6 +164,7 @@ int main(int argc, char** argv) {
     bool quiet = false;
     std::string restart;
     long dump_from = 0;
+    bool fixed_threads = false;
 
     auto* run = app.add_subcommand("run", "run a case");
     run->add_option("case", case_file, "case file (TOML)")->required();
@@ -172,6 +172,9 @@ int main(int argc, char** argv) {
     run->add_option("--set", sets, "override a case value: key.path=value (repeatable)");
     auto* end_opt = run->add_option("--end-time", end_time, "simulated end time [s] (0 writes the initial state)");
     auto* threads_opt = run->add_option("--threads", threads_text, "number of threads")->type_name("N");
+    run->add_flag("--fixed-threads", fixed_threads,
+                  "keep the thread count even while another process holds a core (by default the run uses fewer "
+                  "threads then, and takes them back when the core is free)");
     run->add_flag("--quiet", quiet, "no progress line or final message");
     run->add_option("--restart", restart,
                     "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file; "
@@ -221,7 +224,7 @@ int main(int argc, char** argv) {
                 throw grit::core::InputError(fmt::format("--dump-from {}: must be a step number, 1 or more", dump_from));
             const int threads = threads_opt->count() ? parse_threads(threads_text) : 0;
             return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart,
-                               dump_from);
+                               dump_from, fixed_threads);
         }
         if (sweep->parsed()) {
             grit::app::SweepOptions o;

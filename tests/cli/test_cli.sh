@@ -310,17 +310,20 @@ else
     fail "t0: run.log names the version, the estimate and the end" "$(cat "$T0/run.log" 2>&1)"
 fi
 
-# How the threads wait (app/thread_waits.hpp): grit runs itself again with GOMP_SPINCOUNT=1000 unless the
-# user chose; run.log names what the run had.
-T0W=$W/t0_waits
-env -u GOMP_SPINCOUNT -u OMP_WAIT_POLICY "$GRIT" run "$HYDRO" --end-time 0 --out "$T0W" --quiet >/dev/null 2>&1
-first=$(head -n 1 "$T0W/run.log" 2>/dev/null)
-env -u GOMP_SPINCOUNT OMP_WAIT_POLICY=active "$GRIT" run "$HYDRO" --end-time 0 --out "$T0W" --quiet >/dev/null 2>&1
-chosen=$(head -n 1 "$T0W/run.log" 2>/dev/null)
-if [[ $first == *", GOMP_SPINCOUNT=1000" && $chosen == *", OMP_WAIT_POLICY=active" ]]; then
-    pass "run: short spin waits unless the user chose (run.log: GOMP_SPINCOUNT=1000, then OMP_WAIT_POLICY=active)"
+# How many threads a run uses (parallel/thread_governor.hpp): fewer while another process holds a core,
+# unless --fixed-threads; run.log says so, summary.json counts the changes.
+T0W=$W/t0_threads
+"$GRIT" run "$HYDRO" --end-time 1e-3 --threads 2 --out "$T0W" --quiet >/dev/null 2>&1
+adapting=$(grep -c 'threads: 2, fewer while another process holds a core' "$T0W/run.log" 2>/dev/null || true)
+changes=$(grep -c '"thread_changes":' "$T0W/summary.json" 2>/dev/null || true)
+"$GRIT" run "$HYDRO" --end-time 1e-3 --threads 2 --fixed-threads --out "$T0W" --quiet >/dev/null 2>&1
+fixed=$(grep -c 'fewer while another process' "$T0W/run.log" 2>/dev/null || true)
+fixed_changes=$(grep -c '"thread_changes":' "$T0W/summary.json" 2>/dev/null || true)
+if [[ $adapting == 1 && $changes == 1 && $fixed == 0 && $fixed_changes == 0 ]]; then
+    pass "run: threads adapt to the machine's load unless --fixed-threads (run.log, summary.json)"
 else
-    fail "run: short spin waits unless the user chose" "first: $first; with OMP_WAIT_POLICY=active: $chosen"
+    fail "run: threads adapt to the machine's load unless --fixed-threads" \
+        "adapting: $adapting, changes: $changes; with --fixed-threads: $fixed, $fixed_changes"
 fi
 
 KEYS=(particles steps wall_time_s particle_steps_per_second end_time git_revision)
@@ -588,7 +591,7 @@ if start_and_wait_for_checkpoint "$INTERRUPTED"; then
     bg_rc=0
     wait "$BG_PID" || bg_rc=$?
     status=""
-    [[ -n $JSON_PY ]] && status=$("$JSON_PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$INTERRUPTED/summary.json" 2>/dev/null)
+    [[ -n $JSON_PY ]] && status=$("$JSON_PY" -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$INTERRUPTED/summary.json" 2>/dev/null || true)
     if [[ $bg_rc -eq 130 && $status == interrupted ]]; then
         pass "SIGINT: exit 130, summary.json status 'interrupted'"
     elif [[ $bg_rc -eq 0 ]]; then

@@ -15,8 +15,7 @@ namespace grit::sim {
 
 namespace {
 
-/// How the OpenMP threads wait at a loop's end, as the environment sets it (grit's CLI sets
-/// GOMP_SPINCOUNT unless the user chose: app/thread_waits.hpp).
+/// How the OpenMP threads wait at a loop's end, as the environment sets it.
 std::string thread_waits() {
     if (const char* s = std::getenv("GOMP_SPINCOUNT")) return std::string("GOMP_SPINCOUNT=") + s;
     if (const char* p = std::getenv("OMP_WAIT_POLICY")) return std::string("OMP_WAIT_POLICY=") + p;

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -29,6 +30,7 @@
 #include "grit/modules/sph_solid.hpp"
 #include "grit/modules/symmetry_plane.hpp"
 #include "grit/parallel/parallel.hpp"
+#include "grit/parallel/thread_governor.hpp"
 #include "grit/sim/geometry.hpp"
 #include "grit/sim/particle_blocks.hpp"
 #include "grit/sim/progress.hpp"
@@ -680,7 +682,8 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
                               {"mirror", spec_.crater_mirror}};
     // The x >= 0 half of a symmetric set-up: masses, energies and counts are the half's.
     if (spec_.symmetry_plane) j["symmetry_plane"] = "x";
-    j["threads"] = parallel::max_threads();
+    j["threads"] = run_threads_ > 0 ? run_threads_ : parallel::max_threads();
+    if (options_.adapt_threads) j["thread_changes"] = thread_changes_;
     j["particles"] = s.particles;
     j["steps"] = s.steps;
     j["end_time"] = s.end_time;
@@ -712,6 +715,19 @@ RunSummary Simulation<Dim>::run() {
                    restart ? restarted_from_.string() : std::string(), state_.clock.step, state_.clock.time);
     }
     core::Stopwatch clock;
+    run_threads_ = parallel::max_threads();
+    std::optional<parallel::ThreadGovernor> governor;
+    if (options_.adapt_threads) {
+        governor.emplace(run_threads_);
+        if (log && governor->active() && run_threads_ > 1)
+            log->info(fmt::format("threads: {}, fewer while another process holds a core (--fixed-threads keeps them)",
+                                  run_threads_));
+    }
+    // The run leaves the thread count as it found it, however it ends.
+    struct RestoreThreads {
+        int n;
+        ~RestoreThreads() { parallel::set_threads(n); }
+    } restore_threads{run_threads_};
     Progress progress(!options_.quiet);
     StopSignals signals;
     auto& c = state_.clock;
@@ -742,6 +758,12 @@ RunSummary Simulation<Dim>::run() {
             const double target = std::min(end, next_output_);
             if (c.time + c.dt > target) c.dt = target - c.time;  // land exactly on the output time
             step();
+            if (governor) {
+                if (const std::string change = governor->after_step(); !change.empty()) {
+                    ++thread_changes_;
+                    if (log) log->info(fmt::format("step {} (t = {:.9g} s): {}", c.step, c.time, change));
+                }
+            }
             if (options_.dump_from_step > 0 && c.step >= options_.dump_from_step) write_dump();
             show_progress(false);
             if (c.time >= target * (1.0 - 1e-12)) {

@@ -35,6 +35,9 @@ struct RunOptions {
     /// From this step on (> 0), the SPH particles are written after every step to
     /// dump/<case>_step_<N>.vtu: what starts a blow-up, which happens between two outputs.
     long dump_from_step = 0;
+    /// Use fewer threads while another process holds a core, and take them back when it is free
+    /// (parallel::ThreadGovernor; the CLI's runs). Results do not depend on the thread count.
+    bool adapt_threads = false;
 };
 
 /// What a finished run reports (also written to summary.json).
@@ -155,6 +158,8 @@ private:
     bool has_sph_ = true;  ///< false for a grains-only case: no SPH module
     bool primed_ = false;
     double particle_steps_ = 0.0, pair_steps_ = 0.0;  ///< of this session (for the rates)
+    int run_threads_ = 0;     ///< the threads run() started with (the governor's ceiling)
+    int thread_changes_ = 0;  ///< how often the governor changed the count
 
     particles::SphParticles<Dim> last_good_;
     double last_good_time_ = 0.0;
