@@ -3,7 +3,7 @@
 
 A run folder: a picture of the last output (2D: water, solids coloured by plastic strain, grains to
 scale), the crater profile at several output times on one axis (2D cases with a crater analysis; from
-the snapshots), crater depth C_d and width C_w against time, eroded mass against time,
+crater_history.csv, or the snapshots of a run from before it), crater depth C_d and width C_w against time, eroded mass against time,
 histograms of the impact speeds, angles and positions across x (impacts.csv), and where the removed solid particles were and
 the state they failed in (eroded.csv). A sweep folder (sweep.csv): C_d, C_w and
 eroded mass against each swept parameter.
@@ -102,8 +102,24 @@ def crater_profiles(folder, summary, plots, count):
     of grit's crater analysis (src/grit/analysis/crater.cpp), each particle counted in every bin within a
     quarter spacing of it, so that the curves show the C_d and C_w that series.csv gives."""
     region = summary.get("crater_region")
+    if not region:
+        return
+    history = folder / "crater_history.csv"
+    if history.exists():  # grit's own profiles of every output (since 2026-11-27): no snapshots needed
+        data = np.genfromtxt(history, delimiter=",", names=True)
+        data = np.atleast_1d(data)
+        times = np.unique(data["time"])
+        if len(times) < 2:
+            return
+        picks = sorted({round(k) for k in np.linspace(1, len(times) - 1, min(count, len(times) - 1))})
+        fig, ax = plt.subplots(figsize=(7, 3.6))
+        for k in picks:
+            rows = data[data["time"] == times[k]]
+            ax.plot(rows["x"] * 1e3, (rows["surface"] - region["surface"]) * 1e3, label=time_label(times[k]))
+        finish_profiles(fig, ax, plots)
+        return
     pvd = folder / (summary["case"] + ".pvd")
-    if not region or not pvd.exists():
+    if not pvd.exists():
         return
     entries = [(float(e.get("timestep")), folder / e.get("file")) for e in ET.parse(pvd).getroot().iter("DataSet")]
     entries = [e for e in entries if e[1].exists()]
@@ -129,7 +145,15 @@ def crater_profiles(folder, summary, plots, count):
             for b, h in zip(index[inside], y[inside]):
                 if np.isnan(top[b]) or h > top[b]:
                     top[b] = h
-        ax.plot(centres * 1e3, (top - region["surface"]) * 1e3, label=f"{time * 1e6:.3g} us")
+        ax.plot(centres * 1e3, (top - region["surface"]) * 1e3, label=time_label(time))
+    finish_profiles(fig, ax, plots)
+
+
+def time_label(time):
+    return f"{time * 1e3:.3g} ms" if time >= 1e-3 else f"{time * 1e6:.3g} us"
+
+
+def finish_profiles(fig, ax, plots):
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("surface - original [mm]")
     ax.set_title("crater profile")

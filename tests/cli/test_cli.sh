@@ -548,6 +548,17 @@ if [[ $(head -n 1 "$STRAIGHT/crater.csv") == "x,surface,time" ]]; then
 else
     fail "crater.csv starts with its header row" "first line: $(head -n 1 "$STRAIGHT/crater.csv")"
 fi
+# crater_history.csv: the profile of every output (13: 0 to 12 us), the last one crater.csv's rows.
+bins=$(($(wc -l <"$STRAIGHT/crater.csv") - 1))
+history_times=$(tail -n +2 "$STRAIGHT/crater_history.csv" 2>/dev/null | cut -d, -f3 | sort -u | wc -l)
+if [[ $(head -n 1 "$STRAIGHT/crater_history.csv" 2>/dev/null) == "x,surface,time" && $history_times -eq 13 &&
+    $(($(wc -l <"$STRAIGHT/crater_history.csv") - 1)) -eq $((13 * bins)) ]] &&
+    cmp -s <(tail -n "$bins" "$STRAIGHT/crater_history.csv") <(tail -n +2 "$STRAIGHT/crater.csv"); then
+    pass "crater_history.csv holds the profile of each of the 13 outputs, the last one crater.csv's"
+else
+    fail "crater_history.csv holds the profile of each output" \
+        "$history_times output times, $(wc -l <"$STRAIGHT/crater_history.csv" 2>/dev/null) lines for $bins bins"
+fi
 if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j["restarted_from"] is None else 1)' "$STRAIGHT/summary.json"; then
     pass "summary.json: restarted_from is null for a fresh run"
 else

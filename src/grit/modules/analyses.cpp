@@ -10,6 +10,8 @@
 #include "grit/analysis/crater.hpp"
 #include "grit/analysis/fluid_in_solid.hpp"
 #include "grit/analysis/probes.hpp"
+#include "grit/io/csv_file.hpp"
+#include "grit/io/hdf5_file.hpp"
 
 namespace grit::modules {
 
@@ -34,13 +36,37 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
 }
 
 template <int Dim>
+void CraterModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
+    io::open_csv_log(history_, place.dir / "crater_history.csv", "x,surface,time",
+                     restart && history_restored_ ? history_rows_ : -1);
+    if (!(restart && history_restored_)) history_rows_ = 0;
+}
+
+template <int Dim>
 void CraterModule<Dim>::write_output(const sim::OutputPlace& place) {
     const auto c = crater_of(state_, setup_.spec, setup_.spacing);
     // Header first (numpy's genfromtxt(names=True), pandas' read_csv); the time is a column.
-    std::ofstream out(place.dir / "crater.csv");
-    out << "x,surface,time\n";
+    std::string rows;
     const std::string time = fmt::format("{:.9g}", state_.clock.time);
-    for (std::size_t b = 0; b < c.x.size(); ++b) out << fmt::format("{:.9g},{:.9g},{}\n", c.x[b], c.surface[b], time);
+    for (std::size_t b = 0; b < c.x.size(); ++b) rows += fmt::format("{:.9g},{:.9g},{}\n", c.x[b], c.surface[b], time);
+    std::ofstream out(place.dir / "crater.csv");
+    out << "x,surface,time\n" << rows;
+    if (history_.is_open()) {
+        history_ << rows;
+        history_.flush();
+        history_rows_ += static_cast<long>(c.x.size());
+    }
+}
+
+template <int Dim>
+void CraterModule<Dim>::save(io::Hdf5Group& group) const {
+    group.write("crater_history_rows", static_cast<std::int64_t>(history_rows_));
+}
+
+template <int Dim>
+void CraterModule<Dim>::load(const io::Hdf5Group& group) {
+    history_restored_ = group.has_attribute("crater_history_rows");
+    history_rows_ = history_restored_ ? static_cast<long>(group.read_int("crater_history_rows")) : 0;
 }
 
 template <int Dim>

@@ -4,6 +4,8 @@
 // stage to the step.
 #pragma once
 
+#include <fstream>
+
 #include "grit/sim/module.hpp"
 
 namespace grit::modules {
@@ -15,12 +17,21 @@ public:
     std::string name() const override { return "crater"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
-    /// crater.csv: the surface profile at the output time (x, surface, time), rewritten each output.
+    void open_output(const sim::OutputPlace& place, bool restart) override;
+    /// crater.csv: the surface profile at the output time (x, surface, time), rewritten each output; and
+    /// the same rows appended to crater_history.csv, the profile at every output (a long run's crater
+    /// over time without snapshots: `grit plot`).
     void write_output(const sim::OutputPlace& place) override;
+    /// The rows crater_history.csv holds, so that a restart continues it from the checkpoint's output.
+    void save(io::Hdf5Group& group) const override;
+    void load(const io::Hdf5Group& group) override;
 
 private:
     const sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
+    std::ofstream history_;
+    long history_rows_ = 0;
+    bool history_restored_ = false;  // load() found the count (a checkpoint from before it has none)
 };
 
 template <int Dim>
