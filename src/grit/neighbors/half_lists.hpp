@@ -104,8 +104,6 @@ void sum_pairs_once(const HalfLists& lists, std::vector<Sum>& own, std::vector<S
     own.resize(static_cast<std::size_t>(n));
     spill.resize(lists.spill_rows());
     const Index blocks = lists.block_count();
-    // Blocks (about 64, more on large sets) go one at a time to whichever thread is free: the order of every sum is
-    // fixed inside the block, so the schedule changes no result.
     // Clearing the rows is a store-bound loop of several stores per row (a grain's sum is 56 bytes); a
     // sum whose zero is all zero bits is cleared with memset instead.
     static const bool zero_is_zero_bytes = [] {
@@ -127,6 +125,8 @@ void sum_pairs_once(const HalfLists& lists, std::vector<Sum>& own, std::vector<S
         }
         std::fill(first, last, Sum{});
     };
+    // Blocks (about 64, more on large sets) go one at a time to whichever thread is free: the order of every sum is
+    // fixed inside the block, so the schedule changes no result.
     auto run_block = [&](Index j) {
         const Index begin = lists.block_begin(j), end = lists.block_begin(j + 1);
         clear(own.data() + begin, own.data() + end);
