@@ -171,6 +171,8 @@ def run_plots(folder, plots, profiles):
         fig, ax = plt.subplots(figsize=(7, 3.6))
         ax.plot(t, series["crater_depth"] * 1e3, label="C_d (depth)")
         ax.plot(t, series["crater_width"] * 1e3, label="C_w (width)")
+        if "crater_rim_width" in names:
+            ax.plot(t, series["crater_rim_width"] * 1e3, "--", label="rim to rim (lips' crests)")
         ax.set_xlabel("time [us]")
         ax.set_ylabel("[mm]")
         ax.set_title("crater size")
@@ -274,8 +276,11 @@ def sweep_plots(folder, plots):
             label = ", ".join(f"{k}={v}" for k, v in zip(others, g)) or None
             for ax, col in zip(axes, ("crater_depth", "crater_width")):
                 y = data[col][done].astype(float)[sel][order] * 1e3
-                ax.plot(x[sel][order], y, "o-", label=label)
-        for ax, col in zip(axes, ("C_d [mm]", "C_w [mm]")):
+                line = ax.plot(x[sel][order], y, "o-", label=label)[0]
+                if col == "crater_width" and "crater_rim_width" in names:
+                    rim = data["crater_rim_width"][done].astype(float)[sel][order] * 1e3
+                    ax.plot(x[sel][order], rim, "s--", color=line.get_color(), alpha=0.7)
+        for ax, col in zip(axes, ("C_d [mm]", "C_w [mm] (dashed: rim to rim)" if "crater_rim_width" in names else "C_w [mm]")):
             ax.set_xlabel(key)
             ax.set_ylabel(col)
             ax.grid(True, alpha=0.3)

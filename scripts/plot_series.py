@@ -34,6 +34,8 @@ MARTIN_MOYCE = ROOT / "cases" / "dambreak_2d" / "reference" / "martin_moyce_1952
 UNITS = {
     "crater_depth": ("crater depth C_d", "mm", 1e3),
     "crater_width": ("crater width C_w", "mm", 1e3),
+    "crater_rim_width": ("crater rim to rim", "mm", 1e3),
+    "crater_lip_height": ("crater lip height", "mm", 1e3),
     "front": ("front", "m", 1.0),
     "height": ("height", "m", 1.0),
     "dt": ("time step", "ns", 1e9),

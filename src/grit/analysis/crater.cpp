@@ -44,21 +44,64 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
     out.depth = std::max(0.0, region.surface - out.surface[deepest]);
     const double level = region.surface - 0.5 * spacing;
     if (out.surface[deepest] >= level) return out;
+    struct Edge {
+        double x;        // where the profile crosses the level [m]
+        std::size_t bin;  // the first bin at or above it (the profile's last bin where none is)
+    };
     auto crossing = [&](int dir) {
         auto b = static_cast<long>(deepest);
         while (true) {
             const long next = b + dir;
-            if (next < 0 || next >= static_cast<long>(bins)) return out.x[static_cast<std::size_t>(b)];
+            if (next < 0 || next >= static_cast<long>(bins)) return Edge{out.x[static_cast<std::size_t>(b)], static_cast<std::size_t>(b)};
             const double s0 = out.surface[static_cast<std::size_t>(b)];
             const double s1 = out.surface[static_cast<std::size_t>(next)];
             if (!std::isnan(s1) && s1 >= level) {
                 const double f = (level - s0) / (s1 - s0);
-                return out.x[static_cast<std::size_t>(b)] + f * (out.x[static_cast<std::size_t>(next)] - out.x[static_cast<std::size_t>(b)]);
+                return Edge{out.x[static_cast<std::size_t>(b)] + f * (out.x[static_cast<std::size_t>(next)] - out.x[static_cast<std::size_t>(b)]),
+                            static_cast<std::size_t>(next)};
             }
             b = next;
         }
     };
-    out.width = crossing(+1) - crossing(-1);
+    // The lip beyond an edge, looked for within half the crater's width of it: walking outwards, the
+    // highest surface at least half a spacing above the original one, until the profile falls a spacing
+    // below that crest (one bin's noise is half a spacing). A lip's top is often a plateau whose highest
+    // bin moves with the noise, so its crest is the middle of the bins within half a spacing of the top.
+    struct Lip {
+        double x, height;
+    };
+    auto lip = [&](const Edge& edge, int dir, double reach) {
+        double crest = region.surface + 0.5 * spacing;
+        bool found = false;
+        auto b = static_cast<long>(edge.bin);
+        for (; b >= 0 && b < static_cast<long>(bins); b += dir) {
+            const auto k = static_cast<std::size_t>(b);
+            if (std::abs(out.x[k] - edge.x) > reach) break;
+            const double s = out.surface[k];
+            if (std::isnan(s)) continue;
+            if (found && s < crest - spacing) break;
+            if (s >= crest) {
+                crest = s;
+                found = true;
+            }
+        }
+        if (!found) return Lip{edge.x, 0.0};
+        double sum = 0.0;
+        int n = 0;
+        for (auto c = static_cast<long>(edge.bin); c != b; c += dir) {
+            const auto k = static_cast<std::size_t>(c);
+            if (!std::isnan(out.surface[k]) && out.surface[k] >= crest - 0.5 * spacing) {
+                sum += out.x[k];
+                ++n;
+            }
+        }
+        return Lip{sum / n, crest - region.surface};
+    };
+    const Edge left = crossing(-1), right = crossing(+1);
+    out.width = right.x - left.x;
+    const Lip left_lip = lip(left, -1, 0.5 * out.width), right_lip = lip(right, +1, 0.5 * out.width);
+    out.rim_width = right_lip.x - left_lip.x;
+    out.lip_height = 0.5 * (left_lip.height + right_lip.height);
     return out;
 }
 

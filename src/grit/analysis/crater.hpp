@@ -21,6 +21,8 @@ struct CraterProfile {
     std::vector<double> surface;  ///< surface height in each bin [m]; NaN where no solid is left
     double depth = 0.0;           ///< C_d: deepest point below the original surface [m] (>= 0)
     double width = 0.0;           ///< C_w: width of the crater at the original surface level [m]
+    double rim_width = 0.0;       ///< distance between the crests of the lips piled up either side [m]
+    double lip_height = 0.0;      ///< the two lips' mean height above the original surface [m]
 };
 
 /// Profile of the solid's top surface in bins of width `spacing`: in each bin, the highest centre, plus
@@ -29,7 +31,11 @@ struct CraterProfile {
 /// C_d = y0 - min(surface), or 0. C_w: from the deepest bin, the profile is followed left and right to
 /// where it first rises back to y0 - spacing/2 (the original surface, less the lattice's half spacing);
 /// the crossings are interpolated linearly and C_w is their distance (0 when there is no crater deeper
-/// than half a spacing). Symmetry planes' images are left out (with `mirror`, each particle counts twice).
+/// than half a spacing). The rim width is the distance between the crests of the lips a ductile crater
+/// piles up either side: walking out from each crossing, the highest surface before the profile falls a
+/// spacing below it; a crest less than half a spacing above y0 is no lip, and that side's edge stays at
+/// its crossing (so rim width >= C_w; a crater without lips has rim width = C_w). Symmetry planes' images
+/// are left out (with `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
 }  // namespace grit::analysis

@@ -33,6 +33,8 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     const auto c = crater_of(state_, setup_.spec, setup_.spacing);
     out.push_back(sim::OutputValue::real("crater_depth", c.depth));
     out.push_back(sim::OutputValue::real("crater_width", c.width));
+    out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width));
+    out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height));
 }
 
 template <int Dim>

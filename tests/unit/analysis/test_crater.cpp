@@ -127,3 +127,58 @@ TEST(Crater, MirroredHalfIsTheWholeCrater) {
     const auto c = analyse_crater(half, region, dx);
     EXPECT_LT(c.width, 4.0 * dx);
 }
+
+namespace {
+
+/// Piles `rows` rows on top of column `column` (rows > 0), the lattice continued upwards.
+void pile(grit::particles::SphParticles<2>& ps, int column, int rows) {
+    for (int j = 0; j < rows; ++j) {
+        const Index a = ps.append(1);
+        ps.position()[a] = {{(column + 0.5) * dx, (j + 0.5) * dx}};
+        ps.phase()[a] = static_cast<std::int32_t>(Phase::solid);
+    }
+}
+
+}  // namespace
+
+// Lips: a pit 6 columns wide, 3 rows deep, with 2 rows piled on columns 13-15 and 24-26. Each lip's top
+// is a plateau three bins wide; its crest is the plateau's middle (columns 14 and 25), so the rim width
+// is 11 spacings, and the lips stand 2 spacings high.
+TEST(Crater, LipsPiledUpEitherSideGiveTheRimWidth) {
+    auto ps = block(pit(17, 6, 3));
+    for (const int i : {13, 14, 15, 24, 25, 26}) pile(ps, i, 2);
+    const auto c = analyse_crater(ps, region, dx);
+    EXPECT_NEAR(c.depth, 3.0 * dx, 1e-12);
+    EXPECT_NEAR(c.width, (5.0 + 5.0 / 3.0) * dx, 1e-12);
+    EXPECT_NEAR(c.rim_width, 11.0 * dx, 1e-12);
+    EXPECT_NEAR(c.lip_height, 2.0 * dx, 1e-12);
+}
+
+// No lip (a brittle crater, or a dent): the rim width is C_w. A bump farther from the crater's edge
+// than half its width is not its lip.
+TEST(Crater, WithoutLipsTheRimWidthIsTheWidth) {
+    const auto plain = analyse_crater(block(pit(17, 6, 3)), region, dx);
+    EXPECT_EQ(plain.rim_width, plain.width);
+    EXPECT_EQ(plain.lip_height, 0.0);
+    auto bumped = block(pit(17, 6, 3));
+    pile(bumped, 30, 2);  // 7.2 spacings beyond the right edge, C_w / 2 = 3.3
+    const auto far = analyse_crater(bumped, region, dx);
+    EXPECT_EQ(far.rim_width, far.width);
+    EXPECT_EQ(far.lip_height, 0.0);
+}
+
+// A lip ends where the profile falls a spacing below its crest: a higher bump beyond a trench is not
+// the lip. Pit 12 columns wide (14-25, C_w / 2 = 6.3 spacings), lip 2 rows on columns 27-28, a trench
+// 2 rows deep at 29, 3 rows on column 30; only the left side (no lip there) and the lip at 27-28 count.
+TEST(Crater, LipEndsWhereTheProfileFallsASpacingBelowItsCrest) {
+    auto holes = pit(14, 12, 3);
+    for (const auto& h : pit(29, 1, 2)) holes.push_back(h);
+    auto ps = block(holes);
+    pile(ps, 27, 2);
+    pile(ps, 28, 2);
+    pile(ps, 30, 3);
+    const auto c = analyse_crater(ps, region, dx);
+    const double left_edge = (14.5 - 2.5 / 3.0) * dx;  // the left crossing, where no lip stands
+    EXPECT_NEAR(c.rim_width, 28.0 * dx - left_edge, 1e-12);
+    EXPECT_NEAR(c.lip_height, 0.5 * 2.0 * dx, 1e-12);
+}
