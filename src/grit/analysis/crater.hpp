@@ -32,10 +32,11 @@ struct CraterProfile {
 /// where it first rises back to y0 - spacing/2 (the original surface, less the lattice's half spacing);
 /// the crossings are interpolated linearly and C_w is their distance (0 when there is no crater deeper
 /// than half a spacing). The rim width is the distance between the crests of the lips a ductile crater
-/// piles up either side: walking out from each crossing, the highest surface before the profile falls a
-/// spacing below it; a crest less than half a spacing above y0 is no lip, and that side's edge stays at
-/// its crossing (so rim width >= C_w; a crater without lips has rim width = C_w). Symmetry planes' images
-/// are left out (with `mirror`, each particle counts twice).
+/// piles up either side: walking out from each crossing, within C_w / 2 of it, the highest surface at
+/// least half a spacing above y0, until the profile falls a spacing below it; the crest is the middle of
+/// the bins within half a spacing of that top. A side without such a lip keeps its crossing (so rim
+/// width >= C_w; a crater without lips has rim width = C_w). Symmetry planes' images are left out (with
+/// `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
 }  // namespace grit::analysis
