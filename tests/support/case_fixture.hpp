@@ -1,6 +1,9 @@
 // Helpers for tests that run the cases in cases/ in memory (no files written).
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +22,15 @@ namespace grit::testing {
 inline bool long_tests() {
     const char* value = std::getenv("GRIT_LONG_TESTS");
     return value != nullptr && std::string(value) != "" && std::string(value) != "0";
+}
+
+/// The output value `name` (a series.csv column) of `sim` now: a test failure, and NaN, where it has none.
+template <int Dim>
+double output_value(const sim::Simulation<Dim>& sim, const std::string& name) {
+    for (const auto& v : sim.output_values())
+        if (v.name == name) return v.value;
+    ADD_FAILURE() << "no output value '" << name << "'";
+    return std::nan("");
 }
 
 /// Reads cases/<relative> with overrides (reduced sizes for CI).

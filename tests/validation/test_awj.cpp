@@ -17,13 +17,6 @@ struct Trace {
     double injected = 0.0, impacts = 0.0, mass_flow_rate = 0.0;
 };
 
-double value_of(const std::vector<grit::sim::OutputValue>& values, const std::string& name) {
-    for (const auto& v : values)
-        if (v.name == name) return v.value;
-    ADD_FAILURE() << "no output value " << name;
-    return 0.0;
-}
-
 Trace run(const std::vector<std::string>& overrides, double first, double end, double every) {
     auto o = overrides;
     o.push_back("time.end=" + std::to_string(end));
@@ -32,15 +25,13 @@ Trace run(const std::vector<std::string>& overrides, double first, double end, d
     Trace t;
     for (double time = first; time <= end * (1.0 + 1e-9); time += every) {
         sim.advance_to(time);
-        const auto values = sim.output_values();
-        t.depth.push_back(value_of(values, "crater_depth"));
-        t.strain.push_back(value_of(values, "max_plastic_strain"));
-        t.fluid_in_solid.push_back(value_of(values, "fluid_in_solid"));
+        t.depth.push_back(grit::testing::output_value(sim, "crater_depth"));
+        t.strain.push_back(grit::testing::output_value(sim, "max_plastic_strain"));
+        t.fluid_in_solid.push_back(grit::testing::output_value(sim, "fluid_in_solid"));
     }
-    const auto values = sim.output_values();
     if (spec.abrasive.enabled && spec.abrasive.start < end) {
-        t.injected = value_of(values, "grains_injected");
-        t.impacts = value_of(values, "impacts");
+        t.injected = grit::testing::output_value(sim, "grains_injected");
+        t.impacts = grit::testing::output_value(sim, "impacts");
         t.mass_flow_rate = spec.abrasive.mass_flow_rate;
     }
     return t;

@@ -24,14 +24,6 @@ using grit::testing::replaced;
 
 namespace {
 
-template <int Dim>
-double output(const grit::sim::Simulation<Dim>& sim, const std::string& name) {
-    for (const auto& v : sim.output_values())
-        if (v.name == name) return v.value;
-    ADD_FAILURE() << "no output value '" << name << "'";
-    return std::nan("");
-}
-
 // d = 100 um, rho_p = 2500, water rho_f = 1000, mu = 8.9e-4, g = 9.81, Gidaspow (Wen-Yu, eps = 1):
 // `python3 scripts/terminal_velocity.py` (cases/sedimentation_2d/reference/terminal_velocity.txt).
 constexpr double terminal = 8.056760e-3;          // [m/s], Re = 0.905
@@ -43,11 +35,11 @@ void sedimentation(double approach_tolerance) {
     const auto spec = load_case(Dim == 2 ? "sedimentation_2d/case.toml" : "sedimentation_3d/case.toml");
     grit::sim::Simulation<Dim> sim(spec, in_memory());
     sim.advance_to(relaxation);
-    const double v1 = output(sim, "settling_velocity");
+    const double v1 = grit::testing::output_value(sim, "settling_velocity");
     sim.advance_to(2.0 * relaxation);
-    const double v2 = output(sim, "settling_velocity");
+    const double v2 = grit::testing::output_value(sim, "settling_velocity");
     sim.advance_to(spec.end_time);
-    const double vt = output(sim, "terminal_velocity");
+    const double vt = grit::testing::output_value(sim, "terminal_velocity");
     ::testing::Test::RecordProperty("terminal_velocity", std::to_string(vt));
     EXPECT_NEAR(vt, terminal, 0.03 * terminal) << "the issue's 3 %";
     if (approach_tolerance > 0.0) {
@@ -186,9 +178,9 @@ void packed_bed(const std::string& solver) {
         const auto spec = load_case("packed_bed_2d/case.toml", {gravity, "fluid.solver=" + solver});
         grit::sim::Simulation<2> sim(spec, in_memory());
         sim.advance_to(spec.end_time);
-        const double u = output(sim, "superficial_velocity");
-        const double eps = output(sim, "bed_porosity");
-        const double gradient = output(sim, "pressure_gradient");
+        const double u = grit::testing::output_value(sim, "superficial_velocity");
+        const double eps = grit::testing::output_value(sim, "bed_porosity");
+        const double gradient = grit::testing::output_value(sim, "pressure_gradient");
         EXPECT_NEAR(eps, 0.59929, 1e-4) << "the lattice's porosity, 1 - pi / (4 * 1.4^2)";
         // Steady: the bed carries the fluid's weight along the flow, rho_f g.
         EXPECT_NEAR(gradient, 1000.0 * body_force[k], 0.01 * 1000.0 * body_force[k]);

@@ -46,8 +46,7 @@ Shot fire(const std::string& model, double speed, double angle) {
     grit::sim::Simulation<3> sim(spec, in_memory());
     sim.advance_to(spec.end_time);
     Shot s;
-    for (const auto& v : sim.output_values())
-        if (v.name == "wear_mass_total") s.wear_mass = v.value;
+    s.wear_mass = grit::testing::output_value(sim, "wear_mass_total");
     s.impacts = sim.impacts().total();
     if (!sim.impacts().records().empty()) {
         s.logged_angle = sim.impacts().records().front().angle;
@@ -327,9 +326,7 @@ TEST(SloshingTank, SandRidesTheSurgeInsideTheStlTankAndWearsOnlyTheFloorFirst) {
         impacts += wear->wear_map().impacts(t);
         if (top == 0.0) on_floor += wear->wear_map().mass(t), floor_impacts += wear->wear_map().impacts(t);
     }
-    double series_total = 0.0;
-    for (const auto& v : sim.output_values())
-        if (v.name == "wear_mass_total") series_total = v.value;
+    const double series_total = grit::testing::output_value(sim, "wear_mass_total");
     std::printf("  %lld impacts (%lld on the floor), wear %.4g kg (%.4g on the floor; series %.4g)\n",
                 static_cast<long long>(impacts), static_cast<long long>(floor_impacts), total, on_floor, series_total);
     EXPECT_GT(impacts, 50);
