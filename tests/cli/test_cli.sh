@@ -548,6 +548,13 @@ if [[ $(head -n 1 "$STRAIGHT/crater.csv") == "x,surface,time" ]]; then
 else
     fail "crater.csv starts with its header row" "first line: $(head -n 1 "$STRAIGHT/crater.csv")"
 fi
+# Nothing is eroded in the demo's first 12 us: first_removal_time is null (JSON has no NaN).
+if grep -q '"eroded_mass": 0.0,' "$STRAIGHT/summary.json" && grep -q '"first_removal_time": null,' "$STRAIGHT/summary.json"; then
+    pass "summary.json: first_removal_time is null while nothing has been eroded"
+else
+    fail "summary.json: first_removal_time is null while nothing has been eroded" \
+        "$(grep -E '"(eroded_mass|first_removal_time)"' "$STRAIGHT/summary.json" 2>&1)"
+fi
 # crater_history.csv: the profile of every output (13: 0 to 12 us), the last one crater.csv's rows.
 bins=$(($(wc -l <"$STRAIGHT/crater.csv") - 1))
 history_times=$(tail -n +2 "$STRAIGHT/crater_history.csv" 2>/dev/null | cut -d, -f3 | sort -u | wc -l)
@@ -769,17 +776,21 @@ import csv, json, sys
 d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/eroded.csv")))
 header = open(d + "/eroded.csv").readline().strip()
-eroded = json.load(open(d + "/summary.json"))["eroded_mass"]
+summary = json.load(open(d + "/summary.json"))
+eroded = summary["eroded_mass"]
 total = sum(float(r["mass"]) for r in rows)
+# first_removal_time: the first row's time (eroded.csv writes 9 digits)
+first = summary.get("first_removal_time")
 ok = (header.startswith("time,id,material,cause,x,y,mass,plastic_strain,damage,pressure,von_mises,triaxiality")
       and len(rows) > 0 and abs(total - eroded) <= 1e-9 * eroded
+      and first is not None and abs(first - min(float(r["time"]) for r in rows)) <= 1e-8 * first
       and all(r["cause"] == "failed" and float(r["damage"]) >= 1.0 and r["material"] == "Al6061_T6" for r in rows)
       and header.endswith(",speed,surface") and all(r["surface"] == "1" for r in rows))  # the hammered top row
-print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}")
+print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}, the first at {first} s")
 sys.exit(0 if ok else 1)
 PYEOF
 ); then
-    pass "eroded.csv: one row per removed particle, failed at D = 1, summing to eroded_mass ($why)"
+    pass "eroded.csv: one row per removed particle, failed at D = 1, summing to eroded_mass, the first at summary.json's first_removal_time ($why)"
 else
     fail "eroded.csv: one row per removed particle, summing to eroded_mass" "exit $RC; ${why:-}; $(head -n 3 "$W/eroded/eroded.csv" 2>&1)"
 fi
@@ -813,11 +824,14 @@ if [[ -n $JSON_PY ]] && [[ $RC -eq 0 ]] && why=$("$JSON_PY" - "$W/outlet" <<'PYE
 import csv, json, sys
 d = sys.argv[1]
 rows = list(csv.DictReader(open(d + "/eroded.csv")))
-eroded = json.load(open(d + "/summary.json"))["eroded_mass"]
+summary = json.load(open(d + "/summary.json"))
+eroded = summary["eroded_mass"]
 total = sum(float(r["mass"]) for r in rows)
+first = summary.get("first_removal_time")
 # 0.2 mm of travel takes the block's front column (x = 0.95 mm) past x = 1.1 mm: 10 particles
 ok = (len(rows) == 10 and all(r["cause"] == "outlet" and float(r["x"]) >= 1.1e-3 for r in rows)
-      and eroded > 0.0 and abs(total - eroded) <= 1e-9 * eroded)
+      and eroded > 0.0 and abs(total - eroded) <= 1e-9 * eroded
+      and first is not None and abs(first - min(float(r["time"]) for r in rows)) <= 1e-8 * first)
 print(f"{len(rows)} rows, {total:.6g} kg/m against eroded_mass {eroded:.6g}")
 sys.exit(0 if ok else 1)
 PYEOF

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -45,9 +47,15 @@ ErosionRecord erosion_record(const particles::SphParticles<Dim>& ps, Index i, do
 
 class ErosionLog {
 public:
-    void add(const ErosionRecord& r) { records_.push_back(r); }
+    void add(const ErosionRecord& r) {
+        if (total() == 0) first_time_ = r.time;
+        records_.push_back(r);
+    }
     /// Every removal of the run, restarts included.
     std::size_t total() const noexcept { return earlier_ + records_.size(); }
+    /// When the run first lost solid mass, restarts included (the end of the paper's Stage One, Fig. 13);
+    /// NaN while nothing has gone (and after a restart from a checkpoint that predates this record).
+    double first_time() const noexcept { return first_time_; }
 
     /// Creates eroded.csv with its header (coordinates x, y in 2D; x, y, z in 3D), or, on a restart
     /// (`rows` >= 0), keeps the header and the first `rows` records and appends after them.
@@ -55,17 +63,19 @@ public:
               long rows = -1);
     /// Appends the records not yet written.
     void flush();
-    /// After a checkpoint load: the removals before it (all in the file).
-    void restore(std::size_t earlier) {
+    /// After a checkpoint load: the removals before it (all in the file) and the first one's time.
+    void restore(std::size_t earlier, double first_time) {
         records_.clear();
         written_ = 0;
         earlier_ = earlier;
+        first_time_ = first_time;
     }
 
 private:
     std::vector<ErosionRecord> records_;
     std::size_t written_ = 0;
     std::size_t earlier_ = 0;
+    double first_time_ = std::numeric_limits<double>::quiet_NaN();
     int dimension_ = 2;
     std::vector<std::string> material_names_;
     std::ofstream file_;

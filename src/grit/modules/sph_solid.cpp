@@ -266,6 +266,8 @@ void SolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
         return ph[i] == solid && !ps.is_image(i) ? m[i] * e[i] : 0.0;
     });
     out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded));
+    // When the solid first lost mass (failure or an outlet): the end of Fig. 13's Stage One [s].
+    out.push_back(sim::OutputValue::real("first_removal_time", state_.erosion.first_time()).summary_only());
     out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps));
     out.push_back(sim::OutputValue::real("internal_energy", internal));  // sum of m e over solids [J]
 }
@@ -291,14 +293,18 @@ void SolidModule<Dim>::flush_logs() {
 template <int Dim>
 void SolidModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("eroded_particles", static_cast<std::int64_t>(state_.erosion.total()));
+    group.write("first_removal_time", state_.erosion.first_time());
 }
 
 template <int Dim>
 void SolidModule<Dim>::load(const io::Hdf5Group& group) {
     // A checkpoint from before the erosion log has no count: its eroded.csv, if any, is started again.
+    // One from before the first removal's time has none: it stays unknown (NaN) if something had gone.
     state_.erosion.restore(group.has_attribute("eroded_particles")
                                ? static_cast<std::size_t>(group.read_int("eroded_particles"))
-                               : 0);
+                               : 0,
+                           group.has_attribute("first_removal_time") ? group.read_double("first_removal_time")
+                                                                     : std::numeric_limits<double>::quiet_NaN());
 }
 
 template class SolidModule<2>;
