@@ -6,7 +6,7 @@ scale), the crater profile at several output times on one axis (2D cases with a 
 crater_history.csv, or the snapshots of a run from before it), crater depth C_d and width C_w against time, eroded mass against time,
 histograms of the impact speeds, angles and positions across x (impacts.csv), and where the removed solid particles were and
 the state they failed in (eroded.csv). A sweep folder (sweep.csv): C_d, C_w and
-eroded mass against each swept parameter.
+eroded mass against each swept parameter, and against time for each run (sweep_history.png).
 
 usage: scripts/grit_plot.py FOLDER [--profiles N]
 Uses Debian's python3-numpy and python3-matplotlib; run from another Python that lacks them, it runs
@@ -287,6 +287,45 @@ def sweep_plots(folder, plots):
         if others:
             axes[0].legend(fontsize=7)
         save(fig, plots / f"sweep_{key}.png")
+    sweep_history(folder, data, swept, plots)
+
+
+def sweep_history(folder, data, swept, plots):
+    """C_d, C_w and the eroded mass against time, one line per run of the sweep (from its series.csv,
+    finished or not): Fig. 13(b)'s curves for each jet velocity or flow rate side by side."""
+    runs = []
+    for i in range(data.size):
+        series_path = folder / str(data["folder"][i]) / "series.csv"
+        if not series_path.exists():
+            continue
+        try:
+            series = read_csv(series_path)
+        except ValueError as e:  # rows of another grit version appended by a restart
+            print(f"warning: {series_path} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
+            continue
+        if series.size < 2 or "crater_depth" not in (series.dtype.names or ()):
+            continue
+        label = ", ".join(f"{k}={data[k][i]}" for k in swept)
+        if data["status"][i] != "completed":
+            label += " (running or stopped)"
+        runs.append((label, series))
+    if not runs:
+        return
+    t_end = max(float(s["time"][-1]) for _, s in runs)
+    scale, unit = (1e3, "ms") if t_end >= 1e-3 else (1e6, "us")
+    columns = [("crater_depth", "C_d [mm]", 1e3), ("crater_width", "C_w [mm]", 1e3), ("eroded_mass", "eroded mass [kg/m in 2D, kg in 3D]", 1.0)]
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.6))
+    for label, series in runs:
+        t = series["time"] * scale
+        for ax, (col, _, factor) in zip(axes, columns):
+            if col in series.dtype.names:
+                ax.plot(t, series[col] * factor, label=label)
+    for ax, (_, name, _) in zip(axes, columns):
+        ax.set_xlabel(f"time [{unit}]")
+        ax.set_ylabel(name)
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=7)
+    save(fig, plots / "sweep_history.png")
 
 
 def main() -> int:

@@ -724,8 +724,8 @@ else
 fi
 if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1; then
     grit plot "$SWEEP"
-    if [[ $RC -eq 0 && -s "$SWEEP/plots/sweep_jet.pressure.png" ]]; then
-        pass "plot: a sweep folder gives C_d, C_w against the swept key"
+    if [[ $RC -eq 0 && -s "$SWEEP/plots/sweep_jet.pressure.png" && -s "$SWEEP/plots/sweep_history.png" ]]; then
+        pass "plot: a sweep folder gives C_d, C_w against the swept key, and each run's against time"
     else
         fail "plot: a sweep folder" "exit $RC: $(cat "$W/stderr")"
     fi
