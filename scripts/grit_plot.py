@@ -290,6 +290,11 @@ def sweep_plots(folder, plots):
     sweep_history(folder, data, swept, plots)
 
 
+def value_text(value):
+    """A swept value as the sweep's folder names it: 2e8, not 200000000.0."""
+    return f"{value:g}" if isinstance(value, (float, np.floating)) else str(value)
+
+
 def sweep_history(folder, data, swept, plots):
     """C_d, C_w and the eroded mass against time, one line per run of the sweep (from its series.csv,
     finished or not): Fig. 13(b)'s curves for each jet velocity or flow rate side by side."""
@@ -305,7 +310,7 @@ def sweep_history(folder, data, swept, plots):
             continue
         if series.size < 2 or "crater_depth" not in (series.dtype.names or ()):
             continue
-        label = ", ".join(f"{k}={data[k][i]}" for k in swept)
+        label = ", ".join(f"{k}={value_text(data[k][i])}" for k in swept)
         if data["status"][i] != "completed":
             label += " (running or stopped)"
         runs.append((label, series))
