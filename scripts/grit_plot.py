@@ -90,6 +90,18 @@ def read_csv(path):
     return np.atleast_1d(data)
 
 
+def read_log(path):
+    """A run's CSV log, or an empty array when it is missing, empty or unreadable (rows of another grit
+    version appended by a restart: warned about, not plotted)."""
+    if not path.exists() or path.stat().st_size == 0:
+        return np.empty(0)
+    try:
+        return read_csv(path)
+    except ValueError as e:
+        print(f"warning: {path} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
+        return np.empty(0)
+
+
 def save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
@@ -187,32 +199,26 @@ def run_plots(folder, plots, profiles):
         ax.set_ylabel(f"eroded mass [{per}]")
         ax.grid(True, alpha=0.3)
         save(fig, plots / "eroded_mass.png")
-    impacts = folder / "impacts.csv"
-    if impacts.exists() and impacts.stat().st_size > 0:
-        try:
-            data = read_csv(impacts)
-        except ValueError as e:  # rows of another grit version appended by a restart
-            print(f"warning: {impacts} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
-            data = np.empty(0)
-        if data.size > 0 and "speed" in (data.dtype.names or ()):
-            where = "x" in data.dtype.names  # the grain's position at contact (since 2026-11-27)
-            fig, axes = plt.subplots(1, 3 if where else 2, figsize=(13 if where else 9, 3.4))
-            axes[0].hist(data["speed"], bins=20)
-            axes[0].set_xlabel("impact speed [m/s]")
-            axes[0].set_ylabel("impacts")
-            axes[1].hist(data["angle"], bins=18, range=(0, 90))
-            axes[1].set_xlabel("impact angle [deg] (90: normal)")
-            if where:  # across the jet: how far the grains spread the impacts (the crater's width)
-                x = data["x"] * 1e3
-                if "grain_collisions" in data.dtype.names:  # since 2026-11-27: deflected by another grain?
-                    hit = data["grain_collisions"] > 0
-                    axes[2].hist([x[~hit], x[hit]], bins=40, stacked=True,
-                                 label=["no grain met before", "met another grain before"])
-                    axes[2].legend(fontsize=8)
-                else:
-                    axes[2].hist(x, bins=40)
-                axes[2].set_xlabel("where the grain hit: x [mm]")
-            save(fig, plots / "impacts.png")
+    data = read_log(folder / "impacts.csv")
+    if data.size > 0 and "speed" in (data.dtype.names or ()):
+        where = "x" in data.dtype.names  # the grain's position at contact (since 2026-11-27)
+        fig, axes = plt.subplots(1, 3 if where else 2, figsize=(13 if where else 9, 3.4))
+        axes[0].hist(data["speed"], bins=20)
+        axes[0].set_xlabel("impact speed [m/s]")
+        axes[0].set_ylabel("impacts")
+        axes[1].hist(data["angle"], bins=18, range=(0, 90))
+        axes[1].set_xlabel("impact angle [deg] (90: normal)")
+        if where:  # across the jet: how far the grains spread the impacts (the crater's width)
+            x = data["x"] * 1e3
+            if "grain_collisions" in data.dtype.names:  # since 2026-11-27: deflected by another grain?
+                hit = data["grain_collisions"] > 0
+                axes[2].hist([x[~hit], x[hit]], bins=40, stacked=True,
+                             label=["no grain met before", "met another grain before"])
+                axes[2].legend(fontsize=8)
+            else:
+                axes[2].hist(x, bins=40)
+            axes[2].set_xlabel("where the grain hit: x [mm]")
+        save(fig, plots / "impacts.png")
     erosion_picture(folder, summary, plots)
     if summary:
         snapshot_picture(folder, summary, plots)
@@ -222,14 +228,7 @@ def run_plots(folder, plots, profiles):
 def erosion_picture(folder, summary, plots):
     """eroded.csv: where the removed solid particles were (coloured by the time they went) and the
     state they failed in (plastic strain against triaxiality -p/sigma_vm, by cause)."""
-    path = folder / "eroded.csv"
-    if not path.exists():
-        return
-    try:
-        data = read_csv(path)
-    except ValueError as e:  # rows of another grit version appended by a restart
-        print(f"warning: {path} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
-        return
+    data = read_log(folder / "eroded.csv")
     if data.size == 0 or "cause" not in (data.dtype.names or ()):
         return
     up = "z" if "z" in data.dtype.names else "y"
@@ -300,14 +299,7 @@ def sweep_history(folder, data, swept, plots):
     finished or not): Fig. 13(b)'s curves for each jet velocity or flow rate side by side."""
     runs = []
     for i in range(data.size):
-        series_path = folder / str(data["folder"][i]) / "series.csv"
-        if not series_path.exists():
-            continue
-        try:
-            series = read_csv(series_path)
-        except ValueError as e:  # rows of another grit version appended by a restart
-            print(f"warning: {series_path} not plotted: {str(e).splitlines()[0]}", file=sys.stderr)
-            continue
+        series = read_log(folder / str(data["folder"][i]) / "series.csv")
         if series.size < 2 or "crater_depth" not in (series.dtype.names or ()):
             continue
         label = ", ".join(f"{k}={value_text(data[k][i])}" for k in swept)
