@@ -5,7 +5,8 @@ A run folder: a picture of the last output (2D: water, solids coloured by plasti
 scale), the crater profile at several output times on one axis (2D cases with a crater analysis; from
 crater_history.csv, or the snapshots of a run from before it), crater depth C_d and width C_w against time, eroded mass against time,
 histograms of the impact speeds, angles and positions across x (impacts.csv), and where the removed solid particles were and
-the state they failed in (eroded.csv). A sweep folder (sweep.csv): C_d, C_w and
+the state they failed in (eroded.csv), and (2D) the solid coloured by its damage at four output times
+(damage.png, for runs whose solid is damaged: the rocks' cracks). A sweep folder (sweep.csv): C_d, C_w and
 eroded mass against each swept parameter, and against time for each run (sweep_history.png).
 
 usage: scripts/grit_plot.py FOLDER [--profiles N]
@@ -35,13 +36,90 @@ from grit_vtu import read_vtu  # noqa: E402
 FLUID, SOLID, WALL = 0, 1, 2  # grit's phase codes of SPH particles
 
 
+def snapshots(pvd):
+    """[(time, path)] of the datasets of a .pvd that exist, in its order ([] without the file)."""
+    if not pvd.exists():
+        return []
+    entries = [(float(e.get("timestep")), pvd.parent / e.get("file")) for e in ET.parse(pvd).getroot().iter("DataSet")]
+    return [e for e in entries if e[1].exists()]
+
+
 def last_snapshot(pvd):
     """(time, path) of the last dataset of a .pvd that exists, or None."""
-    if not pvd.exists():
-        return None
-    entries = [(float(e.get("timestep")), pvd.parent / e.get("file")) for e in ET.parse(pvd).getroot().iter("DataSet")]
-    entries = [e for e in entries if e[1].exists()]
+    entries = snapshots(pvd)
     return entries[-1] if entries else None
+
+
+def marker_size(fig, ax, lo, hi, dx):
+    """The scatter size [points^2] of a square marker one particle spacing wide on axes spanning lo..hi [m]."""
+    fig.canvas.draw()
+    bbox = ax.get_window_extent().transformed(fig.dpi_scale_trans.inverted())
+    return (bbox.width * 72.0 / ((hi[0] - lo[0]) * 1e3) * dx * 1e3) ** 2
+
+
+def draw_water_and_walls(ax, x, phase, size, water="#4a90d9"):
+    for code, colour in ((WALL, "0.6"), (FLUID, water)):
+        sel = phase == code
+        ax.scatter(x[sel, 0] * 1e3, x[sel, 1] * 1e3, s=size, marker="s", c=colour, linewidths=0)
+
+
+def draw_grains(ax, g):
+    if g is not None and len(g["Points"]):
+        discs = [Circle((p[0] * 1e3, p[1] * 1e3), r * 1e3) for p, r in zip(g["Points"], g["radius"])]
+        ax.add_collection(PatchCollection(discs, facecolor="#2e8b57", edgecolor="k", linewidth=0.4))
+
+
+def damage_pictures(folder, summary, series, plots, panels=4):
+    """A 2D run whose solid is damaged (the JH-2 rocks' cracks, a metal's failure damage): the solid
+    coloured by its damage D at up to `panels` output times, evenly from the first output with damage to
+    the last, as the paper's Figs. 22, 25 and 28 show it; each titled with that output's damaged area
+    and crack count from series.csv."""
+    if summary.get("dimension") != 2:
+        return
+
+    def damaged(v):
+        solid = v["phase"] == SOLID
+        return "damage" in v and bool((v["damage"][solid] > 0.0).any())
+
+    entries = snapshots(folder / (summary["case"] + ".pvd"))
+    if not entries or not damaged(last := read_vtu(entries[-1][1])):
+        return
+    first = next(k for k, (_, path) in enumerate(entries) if damaged(read_vtu(path)))
+    picks = sorted(set(np.round(np.linspace(first, len(entries) - 1, min(panels, len(entries) - first))).astype(int)))
+    frames = [(entries[k][0], last if k == len(entries) - 1 else read_vtu(entries[k][1])) for k in picks]
+    grains = {t: p for t, p in snapshots(folder / (summary["case"] + "_grains.pvd"))}
+    dx = summary["particle_spacing"]
+    rows = 2 if len(frames) == 4 else 1
+    cols = len(frames) // rows
+    fig, axes = plt.subplots(rows, cols, figsize=(5.4 * cols + 1.0, 3.4 * rows + 0.4), squeeze=False,
+                             layout="constrained")
+    names = series.dtype.names or ()
+    for ax, (time, v) in zip(axes.flat, frames):
+        x, phase = v["Points"], v["phase"]
+        lo, hi = x[:, :2].min(axis=0) - dx, x[:, :2].max(axis=0) + dx
+        ax.set_xlim(lo[0] * 1e3, hi[0] * 1e3)
+        ax.set_ylim(lo[1] * 1e3, hi[1] * 1e3)
+        ax.set_aspect("equal")
+        size = marker_size(fig, ax, lo, hi, dx)
+        draw_water_and_walls(ax, x, phase, size, water="#b7d3ef")
+        solid = phase == SOLID
+        art = ax.scatter(x[solid, 0] * 1e3, x[solid, 1] * 1e3, s=size, marker="s", c=v["damage"][solid],
+                         cmap="YlOrRd", vmin=0.0, vmax=1.0, linewidths=0)
+        draw_grains(ax, read_vtu(grains[time]) if time in grains else None)
+        title = f"t = {time * 1e6:.4g} us"
+        if "damaged_area" in names and series.size:
+            row = series[np.argmin(np.abs(series["time"] - time))]
+            title += f": damaged {row['damaged_area'] * 1e6:.3g} mm^2"
+            if "crack_count" in names:
+                title += f", {int(row['crack_count'])} cracks"
+        ax.set_title(title, fontsize=9)
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("y [mm]")
+    fig.colorbar(art, ax=list(axes.flat), label="damage D [-]", shrink=0.8)
+    fig.suptitle(f"{summary.get('case', '')}: damage (water light blue, grains green)", fontsize=10)
+    fig.savefig(plots / "damage.png", dpi=120)
+    plt.close(fig)
+    print(plots / "damage.png")
 
 
 def snapshot_picture(folder, summary, plots):
@@ -63,22 +141,15 @@ def snapshot_picture(folder, summary, plots):
     ax.set_xlim(lo[0] * 1e3, hi[0] * 1e3)
     ax.set_ylim(lo[1] * 1e3, hi[1] * 1e3)
     ax.set_aspect("equal")
-    fig.canvas.draw()
-    # A marker one spacing wide: the axes' width in points over its width in mm.
-    bbox = ax.get_window_extent().transformed(fig.dpi_scale_trans.inverted())
-    size = (bbox.width * 72.0 / ((hi[0] - lo[0]) * 1e3) * dx * 1e3) ** 2
-    for code, colour in ((WALL, "0.6"), (FLUID, "#4a90d9")):
-        sel = phase == code
-        ax.scatter(x[sel, 0] * 1e3, x[sel, 1] * 1e3, s=size, marker="s", c=colour, linewidths=0)
+    size = marker_size(fig, ax, lo, hi, dx)
+    draw_water_and_walls(ax, x, phase, size)
     solid = phase == SOLID
     if solid.any():
         strain = v["plastic_strain"][solid] if "plastic_strain" in v else np.zeros(int(solid.sum()))
         art = ax.scatter(x[solid, 0] * 1e3, x[solid, 1] * 1e3, s=size, marker="s", c=strain, cmap="inferno",
                          vmin=0.0, linewidths=0)
         fig.colorbar(art, ax=ax, label="plastic strain [-]", shrink=0.8)
-    if g is not None and len(g["Points"]):
-        discs = [Circle((p[0] * 1e3, p[1] * 1e3), r * 1e3) for p, r in zip(g["Points"], g["radius"])]
-        ax.add_collection(PatchCollection(discs, facecolor="#2e8b57", edgecolor="k", linewidth=0.4))
+    draw_grains(ax, g)
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
     ax.set_title(f"{summary.get('case', '')} at t = {time * 1e6:.4g} us (grains green)")
@@ -222,6 +293,7 @@ def run_plots(folder, plots, profiles):
     erosion_picture(folder, summary, plots)
     if summary:
         snapshot_picture(folder, summary, plots)
+        damage_pictures(folder, summary, series, plots)
         crater_profiles(folder, summary, plots, profiles)
 
 

@@ -739,6 +739,22 @@ if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1
     else
         fail "plot: a run folder" "exit $RC: $(cat "$W/stderr") $(ls "$W/awjrun/plots" 2>&1)"
     fi
+    # The water hammer at 400 m/s damages the sandstone within half a microsecond of landing (3.6 us).
+    grit run "$ROOT/cases/waterjet_sandstone_2d/case.toml" --out "$W/rockrun" --set "inlet[0].velocity=400" \
+        --set time.end=5e-6 --quiet
+    grit plot "$W/rockrun"
+    if [[ $RC -eq 0 && -s "$W/rockrun/plots/damage.png" ]] && grep -q 'damage.png' "$W/stdout"; then
+        pass "plot: a rock's run gives the damage map at its outputs"
+    else
+        fail "plot: a rock's run gives the damage map" "exit $RC: $(cat "$W/stderr") $(ls "$W/rockrun/plots" 2>&1)"
+    fi
+    grit run "$ROOT/cases/dambreak_2d/case.toml" --out "$W/waterrun" --set time.end=2e-3 --quiet
+    grit plot "$W/waterrun"
+    if [[ $RC -eq 0 && -s "$W/waterrun/plots/snapshot.png" && ! -e "$W/waterrun/plots/damage.png" ]]; then
+        pass "plot: a run without a solid gives its snapshot and no damage map"
+    else
+        fail "plot: a run without a solid" "exit $RC: $(cat "$W/stderr") $(ls "$W/waterrun/plots" 2>&1)"
+    fi
 else
     skip "plot" "no python3 with matplotlib and numpy"
 fi
