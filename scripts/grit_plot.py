@@ -82,11 +82,13 @@ def damage_pictures(folder, summary, series, plots, panels=4):
         return "damage" in v and bool((v["damage"][solid] > 0.0).any())
 
     entries = snapshots(folder / (summary["case"] + ".pvd"))
-    if not entries or not damaged(last := read_vtu(entries[-1][1])):
+    if not entries or not damaged(read_vtu(entries[-1][1])):
         return
-    first = next(k for k, (_, path) in enumerate(entries) if damaged(read_vtu(path)))
+    for first, (_, path) in enumerate(entries):  # the first damaged output, kept for its picture
+        if damaged(first_frame := read_vtu(path)):
+            break
     picks = sorted(set(np.round(np.linspace(first, len(entries) - 1, min(panels, len(entries) - first))).astype(int)))
-    frames = [(entries[k][0], last if k == len(entries) - 1 else read_vtu(entries[k][1])) for k in picks]
+    frames = [(entries[k][0], first_frame if k == first else read_vtu(entries[k][1])) for k in picks]
     grains = {t: p for t, p in snapshots(folder / (summary["case"] + "_grains.pvd"))}
     dx = summary["particle_spacing"]
     rows = 2 if len(frames) == 4 else 1
