@@ -659,6 +659,35 @@ else
     fail "--restart a finished run with --set time.end: series continues without repeated rows" "exit $RC; $(cat "$W/stderr")"
 fi
 
+# A run started by an older grit, whose series.csv lacks a column added since, continues: the column is
+# added, nan in the rows before the restart.
+OLDER=$W/older
+cp -r "$STRAIGHT" "$OLDER"
+"${JSON_PY:-python3}" - "$OLDER/series.csv" <<'PYEOF'
+import sys
+lines = open(sys.argv[1]).read().splitlines()
+k = lines[0].split(",").index("crater_lip_height")
+open(sys.argv[1], "w").write("".join(",".join(f for j, f in enumerate(l.split(",")) if j != k) + "\n" for l in lines))
+PYEOF
+older_rows=$(($(wc -l < "$OLDER/series.csv") - 1))
+grit run "$DEMO" --restart "$OLDER" "${DEMO_SET[@]}" --set time.end=1.6e-5
+if [[ $RC -eq 0 ]] && grep -q "series.csv gains column(s) crater_lip_height" "$OLDER/run.log" &&
+    [[ $(head -n 1 "$OLDER/series.csv") == $(head -n 1 "$STRAIGHT/series.csv") ]] &&
+    "${JSON_PY:-python3}" - "$OLDER/series.csv" "$older_rows" <<'PYEOF'
+import math, sys
+lines = open(sys.argv[1]).read().splitlines()
+k = lines[0].split(",").index("crater_lip_height")
+rows = [[float(v) for v in l.split(",")] for l in lines[1:]]
+old = int(sys.argv[2])
+sys.exit(0 if len(rows) > old and all(math.isnan(r[k]) for r in rows[:old])
+         and not any(math.isnan(r[k]) for r in rows[old:]) else 1)
+PYEOF
+then
+    pass "--restart a run whose series.csv lacks a newer column: the column is added, nan before the restart"
+else
+    fail "--restart a run whose series.csv lacks a newer column" "exit $RC; $(cat "$W/stderr")"
+fi
+
 # Checkpoints that do not fit: exit 2, one line.
 expect_restart_error() {
     local name=$1 pattern=$2

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iterator>
 #include <stdexcept>
 #include <string_view>
@@ -28,6 +29,18 @@ std::string csv_field(std::string_view s) {
     }
     out += '"';
     return out;
+}
+
+/// The comma-separated fields of an unquoted CSV line.
+std::vector<std::string> split_fields(const std::string& line) {
+    std::vector<std::string> fields;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = line.find(',', start);
+        fields.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) return fields;
+        start = comma + 1;
+    }
 }
 
 }  // namespace
@@ -69,11 +82,53 @@ SeriesWriter::SeriesWriter(std::filesystem::path file, std::vector<std::string> 
         if (i > 0) expected += ',';  // appended, not ("," + field): GCC 12 warns -Wrestrict on the temporary
         expected += csv_field(columns_[i]);
     }
-    if (header != expected)
-        throw std::runtime_error(fmt::format("'{}' has other columns than this run writes; cannot continue it",
-                                             file_.string()));
+    if (header != expected) add_missing_columns(header);
     out_.open(file_, std::ios::out | std::ios::app);
     if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", file_.string()));
+}
+
+void SeriesWriter::add_missing_columns(const std::string& header) {
+    // A series written by an older grit lacks the columns added since; its rows get "nan" there, so
+    // a long run can go on with a newer grit. A column this run no longer writes would lose data, and
+    // quoted names are not parsed here: both are refused.
+    const auto refuse = [&] {
+        return std::runtime_error(fmt::format("'{}' has other columns than this run writes; cannot continue it",
+                                              file_.string()));
+    };
+    if (header.find('"') != std::string::npos) throw refuse();
+    const std::vector<std::string> old_columns = split_fields(header);
+    std::vector<std::size_t> source(columns_.size(), old_columns.size());  // old_columns.size(): added
+    for (std::size_t o = 0; o < old_columns.size(); ++o) {
+        const auto it = std::find(columns_.begin(), columns_.end(), old_columns[o]);
+        if (it == columns_.end() || source[static_cast<std::size_t>(it - columns_.begin())] != old_columns.size())
+            throw refuse();
+        source[static_cast<std::size_t>(it - columns_.begin())] = o;
+    }
+    std::string text;
+    for (std::size_t i = 0; i < columns_.size(); ++i) {
+        if (i > 0) text += ',';
+        text += csv_field(columns_[i]);
+        if (source[i] == old_columns.size()) added_columns_.push_back(columns_[i]);
+    }
+    text += '\n';
+    std::ifstream in(file_);
+    std::string line;
+    std::getline(in, line);  // the old header
+    while (std::getline(in, line)) {
+        const std::vector<std::string> values = split_fields(line);
+        if (values.size() != old_columns.size())
+            throw std::runtime_error(fmt::format("'{}': a row has {} values where the header names {}", file_.string(),
+                                                 values.size(), old_columns.size()));
+        for (std::size_t i = 0; i < columns_.size(); ++i) {
+            if (i > 0) text += ',';
+            text += source[i] == old_columns.size() ? std::string("nan") : values[source[i]];
+        }
+        text += '\n';
+    }
+    in.close();
+    std::ofstream out(file_, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out) throw std::runtime_error(fmt::format("cannot rewrite '{}'", file_.string()));
 }
 
 void SeriesWriter::write_row(const std::vector<double>& values) {

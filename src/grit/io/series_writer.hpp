@@ -16,8 +16,10 @@ public:
     /// Creates (truncates) `file` and writes the header line. Throws std::invalid_argument
     /// for an empty column list and std::runtime_error naming the path on I/O failure.
     SeriesWriter(std::filesystem::path file, std::vector<std::string> columns);
-    /// Continues an existing series after a restart: keeps its header and first `rows` rows, checks
-    /// that the header lists `columns`, and appends.
+    /// Continues an existing series after a restart: keeps its header and first `rows` rows and
+    /// appends. A header that lacks some of `columns` (a series from an older grit) is rewritten with
+    /// them, its rows holding "nan" there (added_columns() names them); one that has a column not in
+    /// `columns` throws std::runtime_error naming the file.
     SeriesWriter(std::filesystem::path file, std::vector<std::string> columns, long rows);
 
     /// Appends one row and flushes. Throws std::logic_error if `values.size()` differs from
@@ -33,11 +35,17 @@ public:
     /// The CSV file.
     const std::filesystem::path& file() const { return file_; }
 
+    /// The columns a continued series did not have, in order (empty for a new or matching one).
+    const std::vector<std::string>& added_columns() const { return added_columns_; }
+
 private:
+    void add_missing_columns(const std::string& header);
+
     std::filesystem::path file_;
     std::vector<std::string> columns_;
     std::ofstream out_;
     long rows_ = 0;
+    std::vector<std::string> added_columns_;
 };
 
 }  // namespace grit::io

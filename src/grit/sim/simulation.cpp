@@ -2,6 +2,7 @@
 #include "grit/sim/simulation.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <atomic>
@@ -713,6 +714,12 @@ RunSummary Simulation<Dim>::run() {
         log = std::make_unique<RunLog>(options_.output_dir, restart);
         log->start(spec_, state_.particles.size(), state_.grains ? state_.grains->grains().size() : Index{0},
                    restart ? restarted_from_.string() : std::string(), state_.clock.step, state_.clock.time);
+        if (series_ && !series_->added_columns().empty()) {
+            const std::string note = fmt::format("series.csv gains column(s) {} (nan in the rows before this restart)",
+                                                 fmt::join(series_->added_columns(), ", "));
+            if (!options_.quiet) fmt::print(stderr, "{}\n", note);
+            log->warn(note);
+        }
     }
     core::Stopwatch clock;
     run_threads_ = parallel::max_threads();

@@ -384,6 +384,31 @@ TEST_F(IoWriterTest, SeriesQuotesAwkwardColumnNames) {
     EXPECT_EQ(read_all(file), "t,\"a,b\",\"say \"\"hi\"\"\"\n");
 }
 
+TEST_F(IoWriterTest, SeriesContinuedByANewerRunGainsItsColumns) {
+    // A series written before a column was added (an older grit) is continued with that column as nan.
+    const fs::path file = dir_ / "series.csv";
+    {
+        std::ofstream out(file);
+        out << "time,mass\n0,1\n1,2\n2,3\n";
+    }
+    grit::io::SeriesWriter s(file, {"time", "depth", "mass", "width"}, 2);
+    EXPECT_EQ(s.added_columns(), (std::vector<std::string>{"depth", "width"}));
+    s.write_row({2.0, 0.5, 3.5, 0.25});
+    EXPECT_EQ(read_all(file), "time,depth,mass,width\n0,nan,1,nan\n1,nan,2,nan\n2,0.5,3.5,0.25\n");
+
+    // A matching header is kept as it is.
+    grit::io::SeriesWriter same(file, {"time", "depth", "mass", "width"}, 3);
+    EXPECT_TRUE(same.added_columns().empty());
+
+    // A column the run no longer writes would be lost: refused, naming the file.
+    try {
+        grit::io::SeriesWriter fewer(file, {"time", "mass", "width"}, 3);
+        FAIL() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    }
+}
+
 TEST_F(IoWriterTest, SeriesIoFailureNamesPath) {
     const fs::path file = dir_ / "missing" / "series.csv";
     try {
