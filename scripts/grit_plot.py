@@ -82,13 +82,16 @@ def damage_pictures(folder, summary, series, plots, panels=4):
         return "damage" in v and bool((v["damage"][solid] > 0.0).any())
 
     entries = snapshots(folder / (summary["case"] + ".pvd"))
-    if not entries or not damaged(read_vtu(entries[-1][1])):
+    if not entries:
         return
-    for first, (_, path) in enumerate(entries):  # the first damaged output, kept for its picture
-        if damaged(first_frame := read_vtu(path)):
-            break
-    picks = sorted(set(np.round(np.linspace(first, len(entries) - 1, min(panels, len(entries) - first))).astype(int)))
-    frames = [(entries[k][0], first_frame if k == first else read_vtu(entries[k][1])) for k in picks]
+    last = len(entries) - 1
+    kept = {last: read_vtu(entries[last][1])}  # the last and the first damaged output, each read once
+    if not damaged(kept[last]):
+        return
+    scanned = ((k, kept[k] if k in kept else read_vtu(entries[k][1])) for k in range(last + 1))
+    first, kept[first] = next((k, v) for k, v in scanned if damaged(v))  # lazily: earlier outputs are dropped
+    picks = sorted(set(np.round(np.linspace(first, last, min(panels, last + 1 - first))).astype(int)))
+    frames = [(entries[k][0], kept[k] if k in kept else read_vtu(entries[k][1])) for k in picks]
     grains = {t: p for t, p in snapshots(folder / (summary["case"] + "_grains.pvd"))}
     dx = summary["particle_spacing"]
     rows = 2 if len(frames) == 4 else 1

@@ -169,8 +169,7 @@ HammerDamage hammer_damage(const std::string& material, const std::string& speed
                                  in_memory());
     sim.advance_to(1.0e-5);
     HammerDamage h;
-    for (const auto& o : sim.output_values())
-        if (o.name == "damaged_area") h.area = o.value;
+    h.area = grit::testing::output_value(sim, "damaged_area");
     const auto& ps = sim.particles();
     const double* damage = ps.fields().get<double>("damage").data();
     int axis = 0, axis_damaged = 0;
