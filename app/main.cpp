@@ -80,6 +80,7 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         add("crater_depth", "crater depth C_d", 1e3, "mm");
         add("crater_width", "crater width C_w", 1e3, "mm");
         add("crater_rim_width", "rim to rim", 1e3, "mm");
+        add("crater_length", "length along the traverse", 1e3, "mm");
         add("eroded_mass", "eroded mass", spec.dimension == 2 ? 1e3 : 1e6, spec.dimension == 2 ? "g/m" : "mg");
         add("first_removal_time", "first removal at", 1e3, "ms");
         add("grains_injected", "grains fed", 1.0, "");

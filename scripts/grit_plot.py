@@ -200,11 +200,16 @@ def crater_profiles(folder, summary, plots, count):
         if len(times) < 2:
             return
         picks = sorted({round(k) for k in np.linspace(1, len(times) - 1, min(count, len(times) - 1))})
+        if "y" in data.dtype.names:  # 3D: the map of cells over x and y
+            crater_sections_3d(data, times, picks, region, plots)
+            return
         fig, ax = plt.subplots(figsize=(7, 3.6))
         for k in picks:
             rows = data[data["time"] == times[k]]
             ax.plot(rows["x"] * 1e3, (rows["surface"] - region["surface"]) * 1e3, label=time_label(times[k]))
         finish_profiles(fig, ax, plots)
+        return
+    if "y_min" in region:  # 3D without crater_history.csv: no profiles
         return
     pvd = folder / (summary["case"] + ".pvd")
     if not pvd.exists():
@@ -237,14 +242,42 @@ def crater_profiles(folder, summary, plots, count):
     finish_profiles(fig, ax, plots)
 
 
+def crater_sections_3d(data, times, picks, region, plots):
+    """3D: the section across the traverse (along y) through each picked output's deepest cell, the one
+    grit's C_w is measured on (crater_profile.png), and the last output's map of the surface
+    (crater_map.png)."""
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    for k in picks:
+        rows = data[data["time"] == times[k]]
+        if not np.any(np.isfinite(rows["surface"])):
+            continue
+        deepest = rows[np.nanargmin(rows["surface"])]
+        section = rows[rows["x"] == deepest["x"]]
+        ax.plot(section["y"] * 1e3, (section["surface"] - region["surface"]) * 1e3,
+                label=f"{time_label(times[k])}, x = {deepest['x'] * 1e3:.2f} mm")
+    finish_profiles(fig, ax, plots, "y (across the traverse) [mm]", "crater section through the deepest cell")
+    rows = data[data["time"] == times[-1]]
+    xs, ys = np.unique(rows["x"]), np.unique(rows["y"])
+    depth = np.full((len(ys), len(xs)), np.nan)
+    depth[np.searchsorted(ys, rows["y"]), np.searchsorted(xs, rows["x"])] = (rows["surface"] - region["surface"]) * 1e3
+    fig, ax = plt.subplots(figsize=(7, 3.6))
+    mesh = ax.pcolormesh(xs * 1e3, ys * 1e3, depth, shading="nearest", cmap="viridis")
+    fig.colorbar(mesh, ax=ax, label="surface - original [mm]")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (along the traverse) [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(f"surface at {time_label(times[-1])}")
+    save(fig, plots / "crater_map.png")
+
+
 def time_label(time):
     return f"{time * 1e3:.3g} ms" if time >= 1e-3 else f"{time * 1e6:.3g} us"
 
 
-def finish_profiles(fig, ax, plots):
-    ax.set_xlabel("x [mm]")
+def finish_profiles(fig, ax, plots, xlabel="x [mm]", title="crater profile"):
+    ax.set_xlabel(xlabel)
     ax.set_ylabel("surface - original [mm]")
-    ax.set_title("crater profile")
+    ax.set_title(title)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     save(fig, plots / "crater_profile.png")

@@ -5,7 +5,8 @@ usage:
   scripts/plot_series.py OUT/series.csv COLUMN [COLUMN ...] [-o plot.png]
       columns of series.csv against time (time in s, ms or us, lengths in mm, pressures in MPa ...)
   scripts/plot_series.py OUT/crater.csv [-o plot.png]
-      the crater profile of the last output: the solid's top surface against x, in mm
+      the crater profile of the last output: the solid's top surface against x, in mm (3D: against y,
+      the section across the traverse through the deepest cell)
   scripts/plot_series.py OUT/series.csv --dambreak [--column-width 0.2] [--reference CSV] [-o plot.png]
       the dam break's surge front in Martin & Moyce's axes, Z = front / a against T = t sqrt(2 g / a),
       with their measurements (cases/dambreak_2d/reference/martin_moyce_1952.csv)
@@ -91,8 +92,13 @@ def plot_crater(data, path, out):
     fig, ax = plt.subplots(figsize=(7, 3.2))
     time = data["time"][0] if len(data) else float("nan")
     scale_t, unit_t = time_axis(np.array([time]))
-    ax.plot(data["x"] * 1e3, data["surface"] * 1e3, drawstyle="steps-mid", label=f"t = {time * scale_t:.4g} {unit_t}")
-    ax.set_xlabel("x [mm]")
+    across = "x"
+    if "y" in data.dtype.names and np.any(np.isfinite(data["surface"])):
+        # 3D: the map's section across the traverse through its deepest cell (where C_w is measured).
+        data = data[data["x"] == data["x"][np.nanargmin(data["surface"])]]
+        across = "y"
+    ax.plot(data[across] * 1e3, data["surface"] * 1e3, drawstyle="steps-mid", label=f"t = {time * scale_t:.4g} {unit_t}")
+    ax.set_xlabel(f"{across} [mm]")
     ax.set_ylabel("surface height [mm]")
     ax.set_title("crater profile (top of the solid; gaps: no solid left)")
     ax.grid(True, alpha=0.3)

@@ -777,6 +777,17 @@ if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1
     else
         fail "plot: a rock's run gives the damage map" "exit $RC: $(cat "$W/stderr") $(ls "$W/rockrun/plots" 2>&1)"
     fi
+    # 3D: the crater is a map over x and y (crater.csv x,y,surface,time); the first grain dents the
+    # copper at about 4 us.
+    grit run "$ROOT/cases/awj_copper_3d/case.toml" --out "$W/awj3d" --set time.end=5e-6 --set output.snapshots=false \
+        --quiet
+    grit plot "$W/awj3d"
+    if [[ $RC -eq 0 && -s "$W/awj3d/plots/crater_map.png" && -s "$W/awj3d/plots/crater_profile.png" ]] &&
+        [[ $(head -1 "$W/awj3d/crater.csv") == x,y,surface,time ]] && grep -q '"crater_length"' "$W/awj3d/summary.json"; then
+        pass "plot: a 3D run gives the crater map and the section through its deepest cell"
+    else
+        fail "plot: a 3D run gives the crater map" "exit $RC: $(cat "$W/stderr") $(ls "$W/awj3d/plots" 2>&1)"
+    fi
     grit run "$ROOT/cases/dambreak_2d/case.toml" --out "$W/waterrun" --set time.end=2e-3 --quiet
     grit plot "$W/waterrun"
     if [[ $RC -eq 0 && -s "$W/waterrun/plots/snapshot.png" && ! -e "$W/waterrun/plots/damage.png" ]]; then

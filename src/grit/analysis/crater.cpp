@@ -36,14 +36,20 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
             if (!region.mirror) break;
         }
     }
+    measure_profile(out, region.surface, spacing);
+    return out;
+}
+
+void measure_profile(CraterProfile& out, double surface0, double spacing) {
+    const std::size_t bins = out.x.size();
     // Deepest point; an empty bin (all eroded) is not a depth we can measure, so it is skipped.
     std::size_t deepest = bins;
     for (std::size_t b = 0; b < bins; ++b)
         if (!std::isnan(out.surface[b]) && (deepest == bins || out.surface[b] < out.surface[deepest])) deepest = b;
-    if (deepest == bins) return out;
-    out.depth = std::max(0.0, region.surface - out.surface[deepest]);
-    const double level = region.surface - 0.5 * spacing;
-    if (out.surface[deepest] >= level) return out;
+    if (deepest == bins) return;
+    out.depth = std::max(0.0, surface0 - out.surface[deepest]);
+    const double level = surface0 - 0.5 * spacing;
+    if (out.surface[deepest] >= level) return;
     struct Edge {
         double x;        // where the profile crosses the level [m]
         std::size_t bin;  // the first bin at or above it (the profile's last bin where none is)
@@ -71,7 +77,7 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
         double x, height;
     };
     auto lip = [&](const Edge& edge, int dir, double reach) {
-        double crest = region.surface + 0.5 * spacing;
+        double crest = surface0 + 0.5 * spacing;
         bool found = false;
         auto b = static_cast<long>(edge.bin);
         for (; b >= 0 && b < static_cast<long>(bins); b += dir) {
@@ -95,13 +101,69 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
                 ++n;
             }
         }
-        return Lip{sum / n, crest - region.surface};
+        return Lip{sum / n, crest - surface0};
     };
     const Edge left = crossing(-1), right = crossing(+1);
     out.width = right.x - left.x;
     const Lip left_lip = lip(left, -1, 0.5 * out.width), right_lip = lip(right, +1, 0.5 * out.width);
     out.rim_width = right_lip.x - left_lip.x;
     out.lip_height = 0.5 * (left_lip.height + right_lip.height);
+}
+
+CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegion& region, double spacing) {
+    CraterMap out;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto centres = [&](double lo, double hi) {
+        const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / spacing)));
+        std::vector<double> c(n);
+        for (std::size_t b = 0; b < n; ++b) c[b] = lo + (static_cast<double>(b) + 0.5) * spacing;
+        return c;
+    };
+    out.x = centres(region.x_min, region.x_max);
+    out.y = centres(region.y_min, region.y_max);
+    const std::size_t nx = out.x.size(), ny = out.y.size();
+    out.surface.assign(nx * ny, nan);
+    const auto* x = ps.position();
+    const auto* phase = ps.phase();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    for (Index i = 0; i < ps.size(); ++i) {
+        if (phase[i] != solid || ps.is_image(i)) continue;
+        const double top = x[i][2] + 0.5 * spacing;
+        const double u = (x[i][0] - region.x_min) / spacing, w = (x[i][1] - region.y_min) / spacing;
+        for (const double a : {u - bin_margin, u + bin_margin}) {
+            if (a < 0.0 || a >= static_cast<double>(nx)) continue;
+            for (const double b : {w - bin_margin, w + bin_margin}) {
+                if (b < 0.0 || b >= static_cast<double>(ny)) continue;
+                double& s = out.surface[static_cast<std::size_t>(b) * nx + static_cast<std::size_t>(a)];
+                if (std::isnan(s) || top > s) s = top;
+            }
+        }
+    }
+    std::size_t deepest = out.surface.size();
+    for (std::size_t k = 0; k < out.surface.size(); ++k)
+        if (!std::isnan(out.surface[k]) && (deepest == out.surface.size() || out.surface[k] < out.surface[deepest]))
+            deepest = k;
+    if (deepest == out.surface.size()) return out;
+    const std::size_t di = deepest % nx;
+    // Across the cut: the section through the deepest cell. Along it: the deepest cell of each x (the
+    // map's lowest over y), so that pits struck at different y along the nozzle's path join.
+    CraterProfile across, along;
+    across.x = out.y;
+    for (std::size_t j = 0; j < ny; ++j) across.surface.push_back(out.surface[j * nx + di]);
+    along.x = out.x;
+    along.surface.assign(nx, nan);
+    for (std::size_t j = 0; j < ny; ++j)
+        for (std::size_t i = 0; i < nx; ++i) {
+            const double s = out.surface[j * nx + i];
+            if (!std::isnan(s) && (std::isnan(along.surface[i]) || s < along.surface[i])) along.surface[i] = s;
+        }
+    measure_profile(across, region.surface, spacing);
+    measure_profile(along, region.surface, spacing);
+    out.depth = across.depth;
+    out.width = across.width;
+    out.rim_width = across.rim_width;
+    out.lip_height = across.lip_height;
+    out.length = along.width;
     return out;
 }
 

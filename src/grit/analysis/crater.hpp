@@ -1,4 +1,5 @@
-// Crater analysis of an eroded solid surface (2D): the surface profile, crater depth C_d and width C_w.
+// Crater analysis of an eroded solid surface: in 2D the surface profile, crater depth C_d and width C_w;
+// in 3D the surface as a map over x and y, C_d, the width across the cut (y) and the length along it (x).
 #pragma once
 
 #include <vector>
@@ -14,6 +15,7 @@ struct CraterRegion {
     /// A symmetry plane at x = 0 (modules/symmetry_plane): each particle also stands at -x, so the
     /// profile is the whole crater's (x_min = -x_max).
     bool mirror = false;
+    double y_min = 0.0, y_max = 0.0;  ///< 3D: the map's range along y, across the jet's traverse [m]
 };
 
 struct CraterProfile {
@@ -38,5 +40,28 @@ struct CraterProfile {
 /// width >= C_w; a crater without lips has rim width = C_w). Symmetry planes' images are left out (with
 /// `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
+
+/// C_d, C_w, rim width and lip height of a profile whose bins (x, surface) are filled, by the rules above;
+/// `surface` is the original surface's height y0.
+void measure_profile(CraterProfile& profile, double surface, double spacing);
+
+/// The 3D surface: the top of the solid in square cells one spacing wide over the region (x and y), by
+/// the 2D rule in both directions (a particle counts in its cell and the cells within a quarter spacing
+/// of it). C_d is the deepest cell below the original surface z0 (`region.surface`). The section across
+/// the cut (along y) through the deepest cell gives C_w, the rim width and the lips' height by the 2D
+/// rules; the crater's length is C_w's rule applied along the cut (x, the traverse) to the deepest cell
+/// of each x, so that pits struck at different y along the nozzle's path join into one kerf. For a
+/// round crater length and width are both its diameter.
+struct CraterMap {
+    std::vector<double> x, y;      ///< cell centres along x and along y [m]
+    std::vector<double> surface;   ///< surface[j * x.size() + i]: the cell at (x[i], y[j]) [m]; NaN: no solid
+    double depth = 0.0;            ///< C_d [m]
+    double width = 0.0;            ///< C_w across the cut (y) through the deepest cell [m]
+    double rim_width = 0.0;        ///< lip crest to lip crest across the cut [m]
+    double lip_height = 0.0;       ///< the lips' mean height above z0 across the cut [m]
+    double length = 0.0;           ///< along the cut (x), over the deepest cell of each x [m]
+};
+
+CraterMap analyse_crater(const particles::SphParticles<3>& particles, const CraterRegion& region, double spacing);
 
 }  // namespace grit::analysis

@@ -1130,13 +1130,18 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
 
     if (top.has("crater")) {
         const Section crater = top.section("crater");
-        if (dim != 2) crater.fail("surface", "crater analysis is 2D so far");
         if (c.solids.empty()) throw InputError("key 'crater': a crater needs a [[solid]]");
         c.has_crater = true;
         c.crater_surface = crater.number("surface");
         c.crater_x_min = crater.number("x_min");
         c.crater_x_max = crater.number("x_max");
         if (c.crater_x_max <= c.crater_x_min + dx) crater.fail("x_max", "must exceed x_min by more than a spacing [m]");
+        if (dim == 3) {
+            c.crater_y_min = crater.number("y_min");
+            c.crater_y_max = crater.number("y_max");
+            if (c.crater_y_max <= c.crater_y_min + dx)
+                crater.fail("y_max", "must exceed y_min by more than a spacing [m]");
+        }
     }
 
     // Crack analysis: asked for with [cracks], and on by default for brittle (JH-2) solids.

@@ -287,8 +287,9 @@ struct CaseSpec {
     std::vector<OutletSpec> outlets;
     std::vector<ProbeSpec> probes;
 
-    bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (2D)
+    bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (3D: crater_length)
     double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
+    double crater_y_min = 0.0, crater_y_max = 0.0;  ///< 3D: the map's range across the traverse
     bool crater_mirror = false;  ///< the profile is mirrored at x = 0 (a symmetry plane)
     /// domain.symmetry = ["x"] (or jet.symmetric): the plane x = 0 is a symmetry plane; only x >= 0 is
     /// laid and run (modules/symmetry_plane).

@@ -17,13 +17,15 @@ namespace grit::modules {
 
 namespace {
 
+analysis::CraterRegion crater_region(const io::CaseSpec& spec) {
+    return {spec.crater_surface, spec.crater_x_min, spec.crater_x_max, spec.crater_mirror, spec.crater_y_min,
+            spec.crater_y_max};
+}
+
+/// The crater of a 2D run (its profile) or of a 3D run (its map).
 template <int Dim>
-analysis::CraterProfile crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing) {
-    if constexpr (Dim == 2)
-        return analysis::analyse_crater(state.particles, {spec.crater_surface, spec.crater_x_min, spec.crater_x_max, spec.crater_mirror},
-                                        spacing);
-    else
-        return {};  // the crater profile is 2D; the 3D kerf analysis comes with the 3D AWJ case
+auto crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing) {
+    return analysis::analyse_crater(state.particles, crater_region(spec), spacing);
 }
 
 }  // namespace
@@ -35,13 +37,19 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     out.push_back(sim::OutputValue::real("crater_width", c.width));
     out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width));
     out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height));
+    if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length));
 }
 
 template <int Dim>
 void CraterModule<Dim>::open_output(const sim::OutputPlace& place, bool restart) {
-    io::open_csv_log(history_, place.dir / "crater_history.csv", "x,surface,time",
+    io::open_csv_log(history_, place.dir / "crater_history.csv", header(),
                      restart && history_restored_ ? history_rows_ : -1);
     if (!(restart && history_restored_)) history_rows_ = 0;
+}
+
+template <int Dim>
+std::string CraterModule<Dim>::header() {
+    return Dim == 2 ? "x,surface,time" : "x,y,surface,time";
 }
 
 template <int Dim>
@@ -50,13 +58,22 @@ void CraterModule<Dim>::write_output(const sim::OutputPlace& place) {
     // Header first (numpy's genfromtxt(names=True), pandas' read_csv); the time is a column.
     std::string rows;
     const std::string time = fmt::format("{:.9g}", state_.clock.time);
-    for (std::size_t b = 0; b < c.x.size(); ++b) rows += fmt::format("{:.9g},{:.9g},{}\n", c.x[b], c.surface[b], time);
+    long count = 0;
+    if constexpr (Dim == 2) {
+        for (std::size_t b = 0; b < c.x.size(); ++b) rows += fmt::format("{:.9g},{:.9g},{}\n", c.x[b], c.surface[b], time);
+        count = static_cast<long>(c.x.size());
+    } else {
+        for (std::size_t j = 0; j < c.y.size(); ++j)
+            for (std::size_t i = 0; i < c.x.size(); ++i)
+                rows += fmt::format("{:.9g},{:.9g},{:.9g},{}\n", c.x[i], c.y[j], c.surface[j * c.x.size() + i], time);
+        count = static_cast<long>(c.surface.size());
+    }
     std::ofstream out(place.dir / "crater.csv");
-    out << "x,surface,time\n" << rows;
+    out << header() << "\n" << rows;
     if (history_.is_open()) {
         history_ << rows;
         history_.flush();
-        history_rows_ += static_cast<long>(c.x.size());
+        history_rows_ += count;
     }
 }
 

@@ -18,15 +18,18 @@ public:
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
     void open_output(const sim::OutputPlace& place, bool restart) override;
-    /// crater.csv: the surface profile at the output time (x, surface, time), rewritten each output; and
-    /// the same rows appended to crater_history.csv, the profile at every output (a long run's crater
-    /// over time without snapshots: `grit plot`).
+    /// crater.csv: the surface profile at the output time (x, surface, time; in 3D the map: x, y,
+    /// surface, time), rewritten each output; and the same rows appended to crater_history.csv, the
+    /// profile at every output (a long run's crater over time without snapshots: `grit plot`).
     void write_output(const sim::OutputPlace& place) override;
     /// The rows crater_history.csv holds, so that a restart continues it from the checkpoint's output.
     void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
 
 private:
+    /// The columns of crater.csv and crater_history.csv.
+    static std::string header();
+
     const sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
     std::ofstream history_;

@@ -182,3 +182,80 @@ TEST(Crater, LipEndsWhereTheProfileFallsASpacingBelowItsCrest) {
     EXPECT_NEAR(c.rim_width, 28.0 * dx - left_edge, 1e-12);
     EXPECT_NEAR(c.lip_height, 0.5 * 2.0 * dx, 1e-12);
 }
+
+namespace {
+
+/// 3D: a block 40 x 20 columns (x, y) and 10 rows deep below z = 0, less the sites of the box
+/// [i0, i0 + ni) x [j0, j0 + nj) `rows` rows deep.
+grit::particles::SphParticles<3> block3(int i0, int ni, int j0, int nj, int rows) {
+    grit::particles::SphParticles<3> ps;
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 20; ++j)
+            for (int k = -10; k < 0; ++k) {
+                if (i >= i0 && i < i0 + ni && j >= j0 && j < j0 + nj && k >= -rows) continue;
+                const Index a = ps.append(1);
+                ps.position()[a] = {{(i + 0.5) * dx, (j + 0.5) * dx, (k + 0.5) * dx}};
+                ps.phase()[a] = static_cast<std::int32_t>(Phase::solid);
+            }
+    return ps;
+}
+
+const grit::analysis::CraterRegion region3{0.0, 0.0, 40 * dx, false, 0.0, 20 * dx};
+
+}  // namespace
+
+TEST(Crater3D, FlatSurfaceHasNoCrater) {
+    const auto c = analyse_crater(block3(0, 0, 0, 0, 0), region3, dx);
+    ASSERT_EQ(c.x.size(), 40u);
+    ASSERT_EQ(c.y.size(), 20u);
+    ASSERT_EQ(c.surface.size(), 800u);
+    for (const double s : c.surface) EXPECT_NEAR(s, 0.0, 1e-15);
+    EXPECT_NEAR(c.depth, 0.0, 1e-15);
+    EXPECT_EQ(c.width, 0.0);
+    EXPECT_EQ(c.length, 0.0);
+}
+
+// A kerf 12 columns long (x) and 6 wide (y), 3 rows deep: across the cut the 2D pit of six columns
+// (5 + 2 (2.5/3) spacings at z0 - dx/2), along it 11 + 2 (2.5/3) spacings.
+TEST(Crater3D, KerfGivesItsDepthWidthAndLength) {
+    const auto c = analyse_crater(block3(10, 12, 7, 6, 3), region3, dx);
+    EXPECT_NEAR(c.depth, 3.0 * dx, 1e-12);
+    EXPECT_NEAR(c.width, (5.0 + 5.0 / 3.0) * dx, 1e-12);
+    EXPECT_NEAR(c.length, (11.0 + 5.0 / 3.0) * dx, 1e-12);
+    EXPECT_EQ(c.rim_width, c.width);  // no lips
+    EXPECT_EQ(c.lip_height, 0.0);
+    // The map: the cell at (x[15], y[9]) is in the kerf, (x[5], y[9]) and (x[15], y[2]) are not.
+    EXPECT_NEAR(c.surface[9 * 40 + 15], -3.0 * dx, 1e-12);
+    EXPECT_NEAR(c.surface[9 * 40 + 5], 0.0, 1e-15);
+    EXPECT_NEAR(c.surface[2 * 40 + 15], 0.0, 1e-15);
+}
+
+// The same pit turned round (long across y): width and length swap, the depth stays.
+TEST(Crater3D, WidthIsAcrossTheTraverseAndLengthAlongIt) {
+    const auto c = analyse_crater(block3(17, 6, 2, 12, 2), region3, dx);
+    EXPECT_NEAR(c.depth, 2.0 * dx, 1e-12);
+    EXPECT_NEAR(c.width, (11.0 + 2.0 * 1.5 / 2.0) * dx, 1e-12);
+    EXPECT_NEAR(c.length, (5.0 + 2.0 * 1.5 / 2.0) * dx, 1e-12);
+}
+
+// Two pits 4 columns long (x) and 3 wide (y), 2 rows deep, one after the other along x at different y
+// (columns 10-13 at rows 2-4, columns 14-17 at rows 12-14): as a traversing jet's grains strike within
+// its radius. Along the cut they make one kerf 8 columns long (the deepest cell of each x); across it
+// the section through the deepest cell crosses one pit.
+TEST(Crater3D, PitsAtDifferentYAlongTheCutJoinIntoOneKerf) {
+    auto ps = block3(0, 0, 0, 0, 0);
+    grit::particles::SphParticles<3> kept;
+    for (Index a = 0; a < ps.size(); ++a) {
+        const auto& p = ps.position()[a];
+        const int i = static_cast<int>(std::floor(p[0] / dx)), j = static_cast<int>(std::floor(p[1] / dx));
+        const bool deep = p[2] > -2.0 * dx;
+        if (deep && ((i >= 10 && i < 14 && j >= 2 && j < 5) || (i >= 14 && i < 18 && j >= 12 && j < 15))) continue;
+        const Index b = kept.append(1);
+        kept.position()[b] = p;
+        kept.phase()[b] = ps.phase()[a];
+    }
+    const auto c = analyse_crater(kept, region3, dx);
+    EXPECT_NEAR(c.depth, 2.0 * dx, 1e-12);
+    EXPECT_NEAR(c.length, (7.0 + 2.0 * 1.5 / 2.0) * dx, 1e-12);
+    EXPECT_NEAR(c.width, (2.0 + 2.0 * 1.5 / 2.0) * dx, 1e-12);
+}

@@ -348,6 +348,31 @@ TEST(JetBuilder, SymmetricJetNeedsASymmetricSetUp) {
     EXPECT_TRUE(has(three_d, "key 'jet.symmetric'")) << three_d;
 }
 
+// 3D: the crater map spans the specimen's top between the outlets in x and in y, whole spacings in from
+// its edges (w = 0.96 mm of the 12 mm plate: 1.0 mm); a [crater] of its own in 3D needs y_min and y_max.
+TEST(JetBuilder, CraterMapIn3DSpansXAndY) {
+    std::string text3 = replaced(awj_case, "dimension = 2", "dimension = 3");
+    text3 = replaced(text3, "min = [-6.0e-3, -4.0e-3]", "min = [-6.0e-3, -3.0e-3, -4.0e-3]");
+    text3 = replaced(text3, "max = [6.0e-3, 0.0]", "max = [6.0e-3, 3.0e-3, 0.0]");
+    text3 = replaced(text3, "particle_spacing = 1.0e-4", "particle_spacing = 2.0e-4");
+    const CaseSpec c = read(text3);
+    EXPECT_TRUE(c.has_crater);
+    EXPECT_NEAR(c.crater_x_min, -5e-3, 1e-12);
+    EXPECT_NEAR(c.crater_x_max, 5e-3, 1e-12);
+    EXPECT_NEAR(c.crater_y_min, -2e-3, 1e-12);
+    EXPECT_NEAR(c.crater_y_max, 2e-3, 1e-12);
+    const std::string own = text3 + "[crater]\nsurface = 0.0\nx_min = -4.0e-3\nx_max = 4.0e-3\n";
+    const std::string missing = error_of(own);
+    EXPECT_TRUE(has(missing, "crater.y_min")) << missing;
+    const CaseSpec given = read(own + "y_min = -1.0e-3\ny_max = 1.0e-3\n");
+    EXPECT_NEAR(given.crater_y_min, -1e-3, 1e-12);
+    EXPECT_NEAR(given.crater_y_max, 1e-3, 1e-12);
+    EXPECT_TRUE(has(error_of(own + "y_min = 1.0e-3\ny_max = 1.0e-3\n"), "crater.y_max"));
+    // In 2D y_min is not a key of [crater].
+    const std::string flat = awj_case + "[crater]\nsurface = 0.0\nx_min = -4.0e-3\nx_max = 4.0e-3\ny_min = 0.0\n";
+    EXPECT_TRUE(has(error_of(flat), "crater.y_min")) << error_of(flat);
+}
+
 // domain.symmetry: the plane x = 0 only, not with a periodic x axis nor ISPH.
 TEST(CaseReader, SymmetryPlaneKeys) {
     const std::string boxed = awj_case + R"(
