@@ -254,6 +254,24 @@ TEST(Restart, CheckpointOfAnotherCaseIsRefused) {
     fs::remove(file);
 }
 
+// A checkpoint of a grit that did not analyse the crater in the case (3D AWJ runs before the crater map):
+// it has no 'crater' module group; the run continues, the crater's files starting at the restart.
+TEST(Restart, CheckpointWithoutTheCraterModuleContinues) {
+    const fs::path file = scratch_file("no_crater.h5");
+    {
+        auto spec = grit::testing::load_case("awj_copper_2d/case.toml");
+        spec.has_crater = false;  // as the older grit built it
+        Simulation<2> s(spec, grit::testing::in_memory());
+        s.advance_to(0.0);
+        s.save_checkpoint(file);
+    }
+    Simulation<2> s(grit::testing::load_case("awj_copper_2d/case.toml"), grit::testing::in_memory());
+    EXPECT_NO_THROW(s.load_checkpoint(file));
+    s.step();
+    EXPECT_EQ(grit::testing::output_value(s, "crater_depth"), 0.0);
+    fs::remove(file);
+}
+
 TEST(Restart, TruncatedOrMissingCheckpointIsRefused) {
     const fs::path file = scratch_file("truncated.h5");
     {

@@ -25,6 +25,8 @@ public:
     /// The rows crater_history.csv holds, so that a restart continues it from the checkpoint's output.
     void save(io::Hdf5Group& group) const override;
     void load(const io::Hdf5Group& group) override;
+    /// A 3D run checkpointed before grit analysed 3D craters: its crater_history.csv starts at the restart.
+    bool continues_without_saved_state() const override { return true; }
 
 private:
     /// The columns of crater.csv and crater_history.csv.

@@ -108,6 +108,9 @@ public:
     /// const: writing a checkpoint cannot change the run it is taken from.
     virtual void save(io::Hdf5Group& /*group*/) const {}
     virtual void load(const io::Hdf5Group& /*group*/) {}
+    /// Whether a checkpoint without this module's group (written by a grit before the module ran in such
+    /// a case) can be continued, the module starting afresh; if not, such a checkpoint is refused.
+    virtual bool continues_without_saved_state() const { return false; }
 };
 
 }  // namespace grit::sim

@@ -626,7 +626,14 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
         if (state_.grains) state_.grains->load(h5.open_group("dem"));
         state_.impacts.load(h5.open_group("impacts"));
         const auto modules = h5.open_group("modules");
-        for (auto& m : modules_) m->load(modules.open_group(m->name()));
+        for (auto& m : modules_) {
+            if (!modules.has(m->name()) && m->continues_without_saved_state()) {
+                restart_notes_.push_back(fmt::format("{} has no state of module '{}' (the grit that wrote it did "
+                                                     "not run it in this case): it starts afresh", where, m->name()));
+                continue;
+            }
+            m->load(modules.open_group(m->name()));
+        }
     } catch (const io::Hdf5Error& e) {
         throw core::InputError(fmt::format("{}: unreadable ({})", where, e.what()));
     }
@@ -719,9 +726,11 @@ RunSummary Simulation<Dim>::run() {
         log = std::make_unique<RunLog>(options_.output_dir, restart);
         log->start(spec_, state_.particles.size(), state_.grains ? state_.grains->grains().size() : Index{0},
                    restart ? restarted_from_.string() : std::string(), state_.clock.step, state_.clock.time);
-        if (series_ && !series_->added_columns().empty()) {
-            const std::string note = fmt::format("series.csv gains column(s) {} (nan in the rows before this restart)",
-                                                 fmt::join(series_->added_columns(), ", "));
+        std::vector<std::string> notes = restart_notes_;
+        if (series_ && !series_->added_columns().empty())
+            notes.push_back(fmt::format("series.csv gains column(s) {} (nan in the rows before this restart)",
+                                        fmt::join(series_->added_columns(), ", ")));
+        for (const std::string& note : notes) {
             if (!options_.quiet) fmt::print(stderr, "{}\n", note);
             log->warn(note);
         }

@@ -173,6 +173,7 @@ private:
     std::unique_ptr<io::SeriesWriter> series_;
     std::vector<io::PvdWriter::Entry> restored_pvd_;
     long restored_series_rows_ = 0;
+    std::vector<std::string> restart_notes_;  ///< what a restart from an older grit's checkpoint changed
     std::filesystem::path restarted_from_;
 };
 
