@@ -9,15 +9,22 @@ namespace grit::analysis {
 
 namespace {
 constexpr double bin_margin = 0.25;  // [spacings]
+
+/// Centres of bins one spacing wide from `lo`, enough of them to reach `hi` (at least one).
+std::vector<double> bin_centres(double lo, double hi, double spacing) {
+    const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / spacing)));
+    std::vector<double> c(n);
+    for (std::size_t b = 0; b < n; ++b) c[b] = lo + (static_cast<double>(b) + 0.5) * spacing;
+    return c;
+}
 }  // namespace
 
 CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterRegion& region, double spacing) {
     CraterProfile out;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const auto bins = static_cast<std::size_t>(std::max(1.0, std::ceil((region.x_max - region.x_min) / spacing)));
-    out.x.resize(bins);
+    out.x = bin_centres(region.x_min, region.x_max, spacing);
+    const std::size_t bins = out.x.size();
     out.surface.assign(bins, nan);
-    for (std::size_t b = 0; b < bins; ++b) out.x[b] = region.x_min + (static_cast<double>(b) + 0.5) * spacing;
     const auto* x = ps.position();
     const auto* phase = ps.phase();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
@@ -113,14 +120,8 @@ void measure_profile(CraterProfile& out, double surface0, double spacing) {
 CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegion& region, double spacing) {
     CraterMap out;
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    auto centres = [&](double lo, double hi) {
-        const auto n = static_cast<std::size_t>(std::max(1.0, std::ceil((hi - lo) / spacing)));
-        std::vector<double> c(n);
-        for (std::size_t b = 0; b < n; ++b) c[b] = lo + (static_cast<double>(b) + 0.5) * spacing;
-        return c;
-    };
-    out.x = centres(region.x_min, region.x_max);
-    out.y = centres(region.y_min, region.y_max);
+    out.x = bin_centres(region.x_min, region.x_max, spacing);
+    out.y = bin_centres(region.y_min, region.y_max, spacing);
     const std::size_t nx = out.x.size(), ny = out.y.size();
     out.surface.assign(nx * ny, nan);
     const auto* x = ps.position();
