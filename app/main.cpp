@@ -1,4 +1,4 @@
-// The grit command-line front end: run, sweep, plot, check, materials.
+// The grit command-line front end: run, sweep, plot, crater, check, materials.
 #include <CLI/CLI.hpp>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -23,6 +23,7 @@
 #include "grit/sim/simulation.hpp"
 #include "grit/sim/version.hpp"
 #include "grit/wear/wear_models.hpp"
+#include "crater_measures.hpp"
 #include "sweep.hpp"
 
 extern char** environ;
@@ -204,6 +205,10 @@ int main(int argc, char** argv) {
     std::string plot_folder;
     plot->add_option("folder", plot_folder, "a run folder (series.csv) or a sweep folder (sweep.csv)")->required();
 
+    auto* crater = app.add_subcommand("crater", "measure a run's crater again at every output (FOLDER/crater_measures.csv)");
+    std::string crater_folder;
+    crater->add_option("folder", crater_folder, "a run folder (summary.json, crater_history.csv)")->required();
+
     auto* check = app.add_subcommand("check", "validate a case file without running it");
     check->add_option("case", case_file, "case file (TOML)")->required();
     check->add_option("--set", sets, "override a case value: key.path=value (repeatable)");
@@ -243,6 +248,12 @@ int main(int argc, char** argv) {
             return grit::app::run_sweep(o);
         }
         if (plot->parsed()) return plot_command(plot_folder);
+        if (crater->parsed()) {
+            const int outputs = grit::app::measure_crater_history(crater_folder);
+            fmt::print("crater: {} outputs measured -> {}\n", outputs,
+                       (std::filesystem::path(crater_folder) / "crater_measures.csv").string());
+            return 0;
+        }
         if (check->parsed()) {
             const auto spec = grit::io::read_case(case_file, sets);
             // Building the particles catches geometry errors too; nothing is written.

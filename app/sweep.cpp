@@ -170,7 +170,7 @@ int run_sweep(const SweepOptions& o) {
     // sweep.csv: the swept keys, then the results of each run (empty where a run has none).
     const char* results[] = {"crater_depth", "crater_width", "eroded_mass", "damaged_area", "crack_count",
                              "wall_time_s", "abrasive_mass_flow_rate", "grains_injected", "crater_rim_width",
-                             "first_removal_time"};
+                             "first_removal_time", "crater_area", "crater_shape_factor"};
     std::ofstream csv(o.out / "sweep.csv");
     for (const auto& p : o.parameters) csv << p.key << ',';
     for (const char* r : results) csv << r << ',';

@@ -289,16 +289,31 @@ def run_plots(folder, plots, profiles):
     t = series["time"] * 1e6
     names = series.dtype.names
     if "crater_depth" in names:
-        fig, ax = plt.subplots(figsize=(7, 3.6))
+        shape = "crater_shape_factor" in names
+        if shape:  # a second panel: V or U (area / (C_d C_w))
+            fig, (ax, ax_shape) = plt.subplots(2, 1, figsize=(7, 6), sharex=True, gridspec_kw={"height_ratios": (3, 2)})
+        else:
+            fig, ax = plt.subplots(figsize=(7, 3.6))
         ax.plot(t, series["crater_depth"] * 1e3, label="C_d (depth)")
         ax.plot(t, series["crater_width"] * 1e3, label="C_w (width)")
         if "crater_rim_width" in names:
             ax.plot(t, series["crater_rim_width"] * 1e3, "--", label="rim to rim (lips' crests)")
-        ax.set_xlabel("time [us]")
         ax.set_ylabel("[mm]")
         ax.set_title("crater size")
         ax.grid(True, alpha=0.3)
         ax.legend()
+        if shape:
+            f = np.where(series["crater_width"] > 0, series["crater_shape_factor"], np.nan)
+            ax_shape.plot(t, f, ".", markersize=3, color="C3")
+            for level, name in ((0.5, "V (triangle)"), (np.pi / 4, "semicircle"), (1.0, "box")):
+                ax_shape.axhline(level, color="0.6", lw=0.8, ls=":")
+                ax_shape.text(t[-1], level, f" {name}", va="center", fontsize=7, color="0.4")
+            ax_shape.set_ylim(0.3, 1.1)
+            ax_shape.set_ylabel("area / (C_d C_w)")
+            ax_shape.grid(True, alpha=0.3)
+            ax_shape.set_xlabel("time [us]")
+        else:
+            ax.set_xlabel("time [us]")
         save(fig, plots / "crater_size.png")
     if "eroded_mass" in names:
         fig, ax = plt.subplots(figsize=(7, 3.2))

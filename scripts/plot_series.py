@@ -37,6 +37,8 @@ UNITS = {
     "crater_width": ("crater width C_w", "mm", 1e3),
     "crater_rim_width": ("crater rim to rim", "mm", 1e3),
     "crater_lip_height": ("crater lip height", "mm", 1e3),
+    "crater_area": ("crater section's area", "mm^2", 1e6),
+    "crater_shape_factor": ("crater shape factor area / (C_d C_w): V 0.5, semicircle 0.785", "-", 1.0),
     "front": ("front", "m", 1.0),
     "height": ("height", "m", 1.0),
     "dt": ("time step", "ns", 1e9),

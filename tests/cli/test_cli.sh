@@ -566,6 +566,32 @@ else
     fail "crater_history.csv holds the profile of each output" \
         "$history_times output times, $(wc -l <"$STRAIGHT/crater_history.csv" 2>/dev/null) lines for $bins bins"
 fi
+# `grit crater DIR` measures every output of crater_history.csv again: its crater_measures.csv must give
+# series.csv's crater columns at each output time (both written to 9 digits), and at least `min_deep`
+# outputs must have a crater deeper than the surface's noise (C_d > 0).
+remeasure_matches_series() {
+    local dir=$1 min_deep=$2
+    grit crater "$dir"
+    [[ $RC -eq 0 && -s "$dir/crater_measures.csv" && -n $JSON_PY ]] || return 1
+    "$JSON_PY" - "$dir/crater_measures.csv" "$dir/series.csv" "$min_deep" <<'PYEOF'
+import csv, math, sys
+measures = list(csv.DictReader(open(sys.argv[1])))
+series = {float(r["time"]): r for r in csv.DictReader(open(sys.argv[2]))}
+cols = [c for c in measures[0] if c != "time"]
+deep = 0
+for m in measures:
+    t = float(m["time"])
+    row = next((r for ts, r in series.items() if abs(ts - t) <= 1e-9 * max(abs(t), 1e-12)), None)
+    if row is None:
+        sys.exit(f"no series.csv row at t = {t}")
+    for c in cols:
+        a, b = float(m[c]), float(row[c])
+        if not math.isclose(a, b, rel_tol=1e-7, abs_tol=1e-15):
+            sys.exit(f"t = {t}: {c} {a} in crater_measures.csv, {b} in series.csv")
+    deep += float(m["crater_depth"]) > 0
+sys.exit(0 if len(measures) == len(series) and deep >= int(sys.argv[3]) else f"{len(measures)} outputs, {deep} with a crater")
+PYEOF
+}
 if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j["restarted_from"] is None else 1)' "$STRAIGHT/summary.json"; then
     pass "summary.json: restarted_from is null for a fresh run"
 else
@@ -788,6 +814,11 @@ if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1
     else
         fail "plot: a 3D run gives the crater map" "exit $RC: $(cat "$W/stderr") $(ls "$W/awj3d/plots" 2>&1)"
     fi
+    if remeasure_matches_series "$W/awj3d" 1; then
+        pass "crater: a 3D run's map measured again from crater_history.csv gives series.csv's crater columns at every output"
+    else
+        fail "crater: a 3D run measured again from crater_history.csv" "exit $RC: $(cat "$W/stderr") $(cat "$W/stdout")"
+    fi
     grit run "$ROOT/cases/dambreak_2d/case.toml" --out "$W/waterrun" --set time.end=2e-3 --quiet
     grit plot "$W/waterrun"
     if [[ $RC -eq 0 && -s "$W/waterrun/plots/snapshot.png" && ! -e "$W/waterrun/plots/damage.png" ]]; then
@@ -849,6 +880,23 @@ PYEOF
     pass "eroded.csv: one row per removed particle, failed at D = 1, summing to eroded_mass, the first at summary.json's first_removal_time ($why)"
 else
     fail "eroded.csv: one row per removed particle, summing to eroded_mass" "exit $RC; ${why:-}; $(head -n 3 "$W/eroded/eroded.csv" 2>&1)"
+fi
+if remeasure_matches_series "$W/eroded" 1; then
+    pass "crater: a 2D run measured again from crater_history.csv gives series.csv's crater columns at every output"
+else
+    fail "crater: a 2D run measured again from crater_history.csv" "exit $RC: $(cat "$W/stderr") $(cat "$W/stdout")"
+fi
+grit crater "$T0"
+if [[ $RC -eq 2 ]] && grep -q "summary.json: no crater_region: the run had no \[crater\]" "$W/stderr"; then
+    pass "crater: a run without [crater]: exit 2, naming summary.json"
+else
+    fail "crater: a run without [crater]: exit 2" "exit $RC: $(cat "$W/stderr")"
+fi
+grit crater "$W/no_such_run"
+if [[ $RC -eq 2 ]] && grep -q "no_such_run/summary.json: cannot be read" "$W/stderr"; then
+    pass "crater: a folder that is not a run: exit 2, naming the file"
+else
+    fail "crater: a folder that is not a run: exit 2" "exit $RC: $(cat "$W/stderr")"
 fi
 # A solid block pushed into an outlet: what the outlet takes of it is eroded mass, logged as "outlet".
 mkdir -p "$W/outletcase"

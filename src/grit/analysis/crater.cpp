@@ -58,20 +58,21 @@ void measure_profile(CraterProfile& out, double surface0, double spacing) {
     const double level = surface0 - 0.5 * spacing;
     if (out.surface[deepest] >= level) return;
     struct Edge {
-        double x;        // where the profile crosses the level [m]
+        double x;         // where the profile crosses the level [m]
         std::size_t bin;  // the first bin at or above it (the profile's last bin where none is)
+        std::size_t last_inside;  // the last bin below the level on this side
     };
     auto crossing = [&](int dir) {
         auto b = static_cast<long>(deepest);
         while (true) {
             const long next = b + dir;
-            if (next < 0 || next >= static_cast<long>(bins)) return Edge{out.x[static_cast<std::size_t>(b)], static_cast<std::size_t>(b)};
-            const double s0 = out.surface[static_cast<std::size_t>(b)];
+            const auto k = static_cast<std::size_t>(b);
+            if (next < 0 || next >= static_cast<long>(bins)) return Edge{out.x[k], k, k};
+            const double s0 = out.surface[k];
             const double s1 = out.surface[static_cast<std::size_t>(next)];
             if (!std::isnan(s1) && s1 >= level) {
                 const double f = (level - s0) / (s1 - s0);
-                return Edge{out.x[static_cast<std::size_t>(b)] + f * (out.x[static_cast<std::size_t>(next)] - out.x[static_cast<std::size_t>(b)]),
-                            static_cast<std::size_t>(next)};
+                return Edge{out.x[k] + f * (out.x[static_cast<std::size_t>(next)] - out.x[k]), static_cast<std::size_t>(next), k};
             }
             b = next;
         }
@@ -112,6 +113,12 @@ void measure_profile(CraterProfile& out, double surface0, double spacing) {
     };
     const Edge left = crossing(-1), right = crossing(+1);
     out.width = right.x - left.x;
+    // The section: each bin below the level counts its depth over its width; a bin with no solid left
+    // (the column eroded through the region) counts at C_d, a lower bound.
+    out.area = 0.0;
+    for (std::size_t b = left.last_inside; b <= right.last_inside; ++b)
+        out.area += spacing * (std::isnan(out.surface[b]) ? out.depth : surface0 - out.surface[b]);
+    out.shape_factor = out.width > 0.0 ? out.area / (out.depth * out.width) : 0.0;
     const Lip left_lip = lip(left, -1, 0.5 * out.width), right_lip = lip(right, +1, 0.5 * out.width);
     out.rim_width = right_lip.x - left_lip.x;
     out.lip_height = 0.5 * (left_lip.height + right_lip.height);
@@ -140,11 +147,18 @@ CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegio
             }
         }
     }
+    measure_map(out, region.surface, spacing);
+    return out;
+}
+
+void measure_map(CraterMap& out, double surface0, double spacing) {
+    const std::size_t nx = out.x.size(), ny = out.y.size();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     std::size_t deepest = out.surface.size();
     for (std::size_t k = 0; k < out.surface.size(); ++k)
         if (!std::isnan(out.surface[k]) && (deepest == out.surface.size() || out.surface[k] < out.surface[deepest]))
             deepest = k;
-    if (deepest == out.surface.size()) return out;
+    if (deepest == out.surface.size()) return;
     const std::size_t di = deepest % nx;
     // Across the cut: the section through the deepest cell. Along it: the deepest cell of each x (the
     // map's lowest over y), so that pits struck at different y along the nozzle's path join.
@@ -158,14 +172,15 @@ CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegio
             const double s = out.surface[j * nx + i];
             if (!std::isnan(s) && (std::isnan(along.surface[i]) || s < along.surface[i])) along.surface[i] = s;
         }
-    measure_profile(across, region.surface, spacing);
-    measure_profile(along, region.surface, spacing);
+    measure_profile(across, surface0, spacing);
+    measure_profile(along, surface0, spacing);
     out.depth = across.depth;
     out.width = across.width;
     out.rim_width = across.rim_width;
     out.lip_height = across.lip_height;
+    out.area = across.area;
+    out.shape_factor = across.shape_factor;
     out.length = along.width;
-    return out;
 }
 
 }  // namespace grit::analysis

@@ -25,6 +25,8 @@ struct CraterProfile {
     double width = 0.0;           ///< C_w: width of the crater at the original surface level [m]
     double rim_width = 0.0;       ///< distance between the crests of the lips piled up either side [m]
     double lip_height = 0.0;      ///< the two lips' mean height above the original surface [m]
+    double area = 0.0;            ///< the crater's section below the original surface, within C_w [m^2]
+    double shape_factor = 0.0;    ///< area / (C_d C_w): V 0.5, semicircle pi/4, box 1 (0 without a crater)
 };
 
 /// Profile of the solid's top surface in bins of width `spacing`: in each bin, the highest centre, plus
@@ -37,11 +39,13 @@ struct CraterProfile {
 /// piles up either side: walking out from each crossing, within C_w / 2 of it, the highest surface at
 /// least half a spacing above y0, until the profile falls a spacing below it; the crest is the middle of
 /// the bins within half a spacing of that top. A side without such a lip keeps its crossing (so rim
-/// width >= C_w; a crater without lips has rim width = C_w). Symmetry planes' images are left out (with
-/// `mirror`, each particle counts twice).
+/// width >= C_w; a crater without lips has rim width = C_w). The area is the sum over the bins between
+/// the two crossings of spacing x (y0 - surface) (a bin with no solid left counts at C_d), and the shape
+/// factor area / (C_d C_w) tells a V (0.5) from a U (a semicircle pi/4, a flat-bottomed box nearly 1).
+/// Symmetry planes' images are left out (with `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
-/// C_d, C_w, rim width and lip height of a profile whose bins (x, surface) are filled, by the rules above;
+/// C_d, C_w, rim width, lip height, area and shape factor of a profile whose bins (x, surface) are filled, by the rules above;
 /// `surface` is the original surface's height y0.
 void measure_profile(CraterProfile& profile, double surface, double spacing);
 
@@ -49,7 +53,7 @@ void measure_profile(CraterProfile& profile, double surface, double spacing);
 /// the 2D rule in both directions (a particle counts in its cell and the cells within a quarter spacing
 /// of it). C_d is the deepest cell below the original surface z0 (`region.surface`). The section across
 /// the cut (along y) through the deepest cell gives C_w, the rim width and the lips' height by the 2D
-/// rules; the crater's length is C_w's rule applied along the cut (x, the traverse) to the deepest cell
+/// rules (the area and shape factor too: the section's); the crater's length is C_w's rule applied along the cut (x, the traverse) to the deepest cell
 /// of each x, so that pits struck at different y along the nozzle's path join into one kerf. For a
 /// round crater length and width are both its diameter.
 struct CraterMap {
@@ -59,9 +63,15 @@ struct CraterMap {
     double width = 0.0;            ///< C_w across the cut (y) through the deepest cell [m]
     double rim_width = 0.0;        ///< lip crest to lip crest across the cut [m]
     double lip_height = 0.0;       ///< the lips' mean height above z0 across the cut [m]
+    double area = 0.0;             ///< the section across the cut below z0, within C_w [m^2]
+    double shape_factor = 0.0;     ///< that section's area / (C_d C_w)
     double length = 0.0;           ///< along the cut (x), over the deepest cell of each x [m]
 };
 
 CraterMap analyse_crater(const particles::SphParticles<3>& particles, const CraterRegion& region, double spacing);
+
+/// C_d, the section's measures and the length of a map whose cells (x, y, surface) are filled, by the
+/// rules above; `surface` is the original surface's height z0.
+void measure_map(CraterMap& map, double surface, double spacing);
 
 }  // namespace grit::analysis

@@ -37,6 +37,8 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     out.push_back(sim::OutputValue::real("crater_width", c.width));
     out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width));
     out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height));
+    out.push_back(sim::OutputValue::real("crater_area", c.area));
+    out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor));
     if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length));
 }
 

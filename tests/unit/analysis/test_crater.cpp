@@ -68,6 +68,44 @@ TEST(Crater, RectangularPitGivesItsDepthAndWidth) {
     EXPECT_NEAR(c.width, (5.0 + 5.0 / 3.0) * dx, 1e-12);
 }
 
+// The section's area and the shape factor area / (C_d C_w) of pits whose shape is known.
+TEST(Crater, BoxPitHasItsAreaAndAShapeFactorNearOne) {
+    // Six columns, three rows deep: 18 cells. C_w = 6.667 spacings (above): 18 / (3 x 6.667) = 0.9.
+    const auto c = analyse_crater(block(pit(17, 6, 3)), region, dx);
+    EXPECT_NEAR(c.area, 18.0 * dx * dx, 1e-18);
+    EXPECT_NEAR(c.shape_factor, 18.0 / (3.0 * (5.0 + 5.0 / 3.0)), 1e-12);
+}
+
+TEST(Crater, VPitHasAShapeFactorNearAHalf) {
+    // A staircase V: the column k from the axis is eroded n - |k| rows deep (n = 8). Its area is n^2
+    // cells, C_d n spacings, C_w (2n - 1) spacings (the profile crosses y0 - dx/2 halfway between the
+    // last one-row column and the intact one): n / (2n - 1) = 0.533, a triangle's 0.5 as n grows.
+    constexpr int n = 8;
+    std::vector<std::array<int, 2>> holes;
+    for (int k = -(n - 1); k <= n - 1; ++k)
+        for (int j = -(n - std::abs(k)); j < 0; ++j) holes.push_back({20 + k, j});
+    const auto c = analyse_crater(block(holes), region, dx);
+    EXPECT_NEAR(c.depth, n * dx, 1e-12);
+    EXPECT_NEAR(c.width, (2 * n - 1) * dx, 1e-12);
+    EXPECT_NEAR(c.area, n * n * dx * dx, 1e-18);
+    EXPECT_NEAR(c.shape_factor, n / (2.0 * n - 1.0), 1e-12);
+    EXPECT_LT(c.shape_factor, 0.55);
+}
+
+TEST(Crater, SemicircularPitHasAShapeFactorNearAQuarterPi) {
+    // The lattice sites within a radius of 9 spacings of the surface point above column 20's left edge
+    // (a semicircle of area pi R^2 / 2 on the lattice): the shape factor is pi / 4 = 0.785 to within the
+    // staircase's error, well apart from the V's 0.5 and the box's 0.9 above.
+    constexpr double radius = 9.0;
+    std::vector<std::array<int, 2>> holes;
+    for (int i = 0; i < 40; ++i)
+        for (int j = -10; j < 0; ++j)
+            if (std::hypot(i + 0.5 - 20.0, j + 0.5) < radius) holes.push_back({i, j});
+    const auto c = analyse_crater(block(holes), region, dx);
+    EXPECT_NEAR(c.area, static_cast<double>(holes.size()) * dx * dx, 1e-18);
+    EXPECT_NEAR(c.shape_factor, std::acos(-1.0) / 4.0, 0.05);
+}
+
 TEST(Crater, PitOneColumnWideIsResolved) {
     // Bins centred on the columns: the neighbour columns are a spacing from the pit bin's centre,
     // outside its widened edges (3/4 of a spacing).
@@ -224,6 +262,8 @@ TEST(Crater3D, KerfGivesItsDepthWidthAndLength) {
     EXPECT_NEAR(c.length, (11.0 + 5.0 / 3.0) * dx, 1e-12);
     EXPECT_EQ(c.rim_width, c.width);  // no lips
     EXPECT_EQ(c.lip_height, 0.0);
+    EXPECT_NEAR(c.area, 18.0 * dx * dx, 1e-18);  // the section across the cut: 6 columns, 3 rows
+    EXPECT_NEAR(c.shape_factor, 18.0 / (3.0 * (5.0 + 5.0 / 3.0)), 1e-12);
     // The map: the cell at (x[15], y[9]) is in the kerf, (x[5], y[9]) and (x[15], y[2]) are not.
     EXPECT_NEAR(c.surface[9 * 40 + 15], -3.0 * dx, 1e-12);
     EXPECT_NEAR(c.surface[9 * 40 + 5], 0.0, 1e-15);
