@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
 
     auto* crater = app.add_subcommand("crater", "measure a run's crater again at every output (FOLDER/crater_measures.csv)");
     std::string crater_folder;
-    crater->add_option("folder", crater_folder, "a run folder (summary.json, crater_history.csv)")->required();
+    crater->add_option("folder", crater_folder, "a run folder (summary.json, crater_history.csv), or a sweep folder: each of its runs")->required();
 
     auto* check = app.add_subcommand("check", "validate a case file without running it");
     check->add_option("case", case_file, "case file (TOML)")->required();
@@ -249,9 +249,22 @@ int main(int argc, char** argv) {
         }
         if (plot->parsed()) return plot_command(plot_folder);
         if (crater->parsed()) {
-            const int outputs = grit::app::measure_crater_history(crater_folder);
-            fmt::print("crater: {} outputs measured -> {}\n", outputs,
-                       (std::filesystem::path(crater_folder) / "crater_measures.csv").string());
+            // A sweep folder (sweep.csv, no summary.json of its own): each of its runs with a crater.
+            const std::filesystem::path folder(crater_folder);
+            std::vector<std::filesystem::path> runs;
+            if (std::filesystem::exists(folder / "sweep.csv") && !std::filesystem::exists(folder / "summary.json")) {
+                for (const auto& entry : std::filesystem::directory_iterator(folder))
+                    if (std::filesystem::exists(entry.path() / "crater_history.csv")) runs.push_back(entry.path());
+                std::sort(runs.begin(), runs.end());
+                if (runs.empty())
+                    throw grit::core::InputError(fmt::format("crater {}: a sweep folder without a run that has crater_history.csv", crater_folder));
+            } else {
+                runs.push_back(folder);
+            }
+            for (const auto& run_folder : runs) {
+                const int outputs = grit::app::measure_crater_history(run_folder);
+                fmt::print("crater: {} outputs measured -> {}\n", outputs, (run_folder / "crater_measures.csv").string());
+            }
             return 0;
         }
         if (check->parsed()) {

@@ -777,6 +777,13 @@ if [[ $RC -eq 2 ]] && grep -q "key 'jet.pressure' = 150" "$W/stderr" && [[ ! -e 
 else
     fail "sweep: a bad value stops it before any run" "exit $RC: $(cat "$W/stderr")"
 fi
+grit crater "$SWEEP"
+if [[ $RC -eq 0 && $(grep -c 'outputs measured' "$W/stdout") -eq 2 && -s "$SWEEP/jet.pressure=1.5e8/crater_measures.csv" &&
+    -s "$SWEEP/jet.pressure=2.5e8/crater_measures.csv" ]]; then
+    pass "crater: a sweep folder: each run measured again"
+else
+    fail "crater: a sweep folder: each run measured again" "exit $RC: $(cat "$W/stdout") $(cat "$W/stderr")"
+fi
 if [[ -n $JSON_PY ]] && "$JSON_PY" -c 'import matplotlib, numpy' >/dev/null 2>&1; then
     grit plot "$SWEEP"
     if [[ $RC -eq 0 && -s "$SWEEP/plots/sweep_jet.pressure.png" && -s "$SWEEP/plots/sweep_history.png" ]]; then
