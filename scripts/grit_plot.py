@@ -389,7 +389,8 @@ def sweep_plots(folder, plots):
     for key in swept:
         x = data[key][done].astype(float)
         others = [k for k in swept if k != key]
-        fig, axes = plt.subplots(1, 2, figsize=(9, 3.4))
+        shape = "crater_shape_factor" in names  # a third panel: V (0.5) or U (pi/4 and above)
+        fig, axes = plt.subplots(1, 3 if shape else 2, figsize=(13 if shape else 9, 3.4))
         # One line per combination of the other swept values.
         groups = {tuple(data[k][done][i] for k in others) for i in range(int(done.sum()))} or {()}
         for g in sorted(groups):
@@ -404,7 +405,15 @@ def sweep_plots(folder, plots):
                 if col == "crater_width" and "crater_rim_width" in names:
                     rim = data["crater_rim_width"][done].astype(float)[sel][order] * 1e3
                     ax.plot(x[sel][order], rim, "s--", color=line.get_color(), alpha=0.7)
-        for ax, col in zip(axes, ("C_d [mm]", "C_w [mm] (dashed: rim to rim)" if "crater_rim_width" in names else "C_w [mm]")):
+            if shape:
+                f = data["crater_shape_factor"][done].astype(float)[sel][order]
+                axes[2].plot(x[sel][order], f, "o-", color=line.get_color())
+        labels = ["C_d [mm]", "C_w [mm] (dashed: rim to rim)" if "crater_rim_width" in names else "C_w [mm]"]
+        if shape:
+            labels.append("shape factor area / (C_d C_w)")
+            for level in (0.5, np.pi / 4, 1.0):
+                axes[2].axhline(level, color="0.6", lw=0.8, ls=":")
+        for ax, col in zip(axes, labels):
             ax.set_xlabel(key)
             ax.set_ylabel(col)
             ax.grid(True, alpha=0.3)
