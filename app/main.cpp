@@ -81,6 +81,9 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         add("crater_depth", "crater depth C_d", 1e3, "mm");
         add("crater_width", "crater width C_w", 1e3, "mm");
         add("crater_rim_width", "rim to rim", 1e3, "mm");
+        for (const auto& v : summary.values)  // V (0.5) or U (0.785 and above); nothing while there is no crater
+            if (v.name == "crater_shape_factor" && v.in_summary && v.value > 0.0)
+                results.push_back(fmt::format("shape area / (C_d C_w) = {:.2f}", v.value));
         add("crater_length", "length along the traverse", 1e3, "mm");
         add("eroded_mass", "eroded mass", spec.dimension == 2 ? 1e3 : 1e6, spec.dimension == 2 ? "g/m" : "mg");
         add("first_removal_time", "first removal at", 1e3, "ms");
