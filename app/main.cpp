@@ -86,7 +86,7 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
                 results.push_back(fmt::format("shape area / (C_d C_w) = {:.2f}", v.value));
         add("crater_length", "length along the traverse", 1e3, "mm");
         add("eroded_mass", "eroded mass", spec.dimension == 2 ? 1e3 : 1e6, spec.dimension == 2 ? "g/m" : "mg");
-        add("first_removal_time", "first removal at", 1e3, "ms");
+        add("first_removal_time", "first removal", 1e3, "ms");
         add("grains_injected", "grains fed", 1.0, "");
         add("impacts", "impacts", 1.0, "");
         if (!results.empty()) fmt::print("  {}\n", fmt::join(results, ", "));
