@@ -2,6 +2,7 @@
 #include "grit/modules/analyses.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <variant>
@@ -40,6 +41,18 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     out.push_back(sim::OutputValue::real("crater_area", c.area));
     out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor));
     if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length));
+}
+
+template <int Dim>
+void CraterModule<Dim>::describe(nlohmann::ordered_json& summary) const {
+    const auto& spec = setup_.spec;
+    auto& region = summary["crater_region"];
+    region = {{"surface", spec.crater_surface}, {"x_min", spec.crater_x_min}, {"x_max", spec.crater_x_max},
+              {"mirror", spec.crater_mirror}};
+    if constexpr (Dim == 3) {
+        region["y_min"] = spec.crater_y_min;
+        region["y_max"] = spec.crater_y_max;
+    }
 }
 
 template <int Dim>

@@ -17,6 +17,8 @@ public:
     std::string name() const override { return "crater"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
+    /// summary.json's crater_region: where the crater is measured (`grit plot`'s profiles, `grit crater`).
+    void describe(nlohmann::ordered_json& summary) const override;
     void open_output(const sim::OutputPlace& place, bool restart) override;
     /// crater.csv: the surface profile at the output time (x, surface, time; in 3D the map: x, y,
     /// surface, time), rewritten each output; and the same rows appended to crater_history.csv, the

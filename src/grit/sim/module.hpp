@@ -4,6 +4,8 @@
 // output files and saves and loads what it holds beyond the State.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -95,6 +97,9 @@ public:
     virtual std::string check_health() const { return {}; }
     /// Output values at the current state, in column order.
     virtual void output_values(std::vector<OutputValue>& /*out*/) const {}
+    /// What summary.json should say of the module's set-up, beyond its output values (the crater's
+    /// region, which `grit plot` and `grit crater` read back).
+    virtual void describe(nlohmann::ordered_json& /*summary*/) const {}
 
     /// Output files of its own: `open` before the first output (`restart`: continue the files of the
     /// run a checkpoint came from), `write` at each output time.

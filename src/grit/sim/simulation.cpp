@@ -685,14 +685,7 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["dimension"] = Dim;
     j["case_file"] = spec_.source.string();
     j["particle_spacing"] = spec_.particle_spacing;
-    if (spec_.has_crater) {  // where the crater is measured (for scripts/grit_plot.py's profiles)
-        j["crater_region"] = {{"surface", spec_.crater_surface}, {"x_min", spec_.crater_x_min}, {"x_max", spec_.crater_x_max},
-                              {"mirror", spec_.crater_mirror}};
-        if (Dim == 3) {
-            j["crater_region"]["y_min"] = spec_.crater_y_min;
-            j["crater_region"]["y_max"] = spec_.crater_y_max;
-        }
-    }
+    for (const auto& m : modules_) m->describe(j);
     // The x >= 0 half of a symmetric set-up: masses, energies and counts are the half's.
     if (spec_.symmetry_plane) j["symmetry_plane"] = "x";
     j["threads"] = run_threads_ > 0 ? run_threads_ : parallel::max_threads();
