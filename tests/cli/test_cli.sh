@@ -905,6 +905,39 @@ if [[ $RC -eq 2 ]] && grep -q "no_such_run/summary.json: cannot be read" "$W/std
 else
     fail "crater: a folder that is not a run: exit 2" "exit $RC: $(cat "$W/stderr")"
 fi
+# scripts/crater_windows.py: the mean of each window (a, b] over the outputs with a crater, and the eroded
+# mass at the window's last output, against series.csv read here (outputs every microsecond to 6 us).
+if [[ -n $JSON_PY ]]; then
+    if out=$("$JSON_PY" "$ROOT/scripts/crater_windows.py" "$W/eroded" --edges 0,0.003,0.006 \
+        --columns crater_depth,crater_shape_factor 2>&1) && why=$("$JSON_PY" - "$W/eroded/series.csv" "$out" <<'PYEOF'
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+def mean(col, a, b, scale):
+    v = [float(r[col]) * scale for r in rows if a < float(r["time"]) <= b and math.isfinite(float(r[col]))]
+    return v and sum(v) / len(v)
+want = []
+for col, scale, fmt in (("crater_depth", 1e3, "{:.3f}"), ("crater_shape_factor", 1.0, "{:.3g}")):
+    cells = [mean(col, a, b, scale) for a, b in ((0, 3e-6), (3e-6, 6e-6))]
+    want.append("| eroded | " + " | ".join("-" if c == [] else fmt.format(c) for c in cells) + " |")
+last = [max((r for r in rows if a < float(r["time"]) <= b), key=lambda r: float(r["time"])) for a, b in ((0, 3e-6), (3e-6, 6e-6))]
+want.append("| eroded | " + " | ".join("{:.3g}".format(float(r["eroded_mass"]) * 1e3) for r in last) + " |")
+lines = sys.argv[2].splitlines()
+missing = [w for w in want if w not in lines]
+print("; ".join(missing) if missing else " / ".join(want))
+sys.exit(1 if missing else 0)
+PYEOF
+); then
+        pass "crater_windows.py: window means of C_d and the shape factor, the eroded mass at each window's end ($why)"
+    else
+        fail "crater_windows.py: window means against series.csv" "${why:-}; $out"
+    fi
+    out=$("$JSON_PY" "$ROOT/scripts/crater_windows.py" "$W/no_such_run" 2>&1)
+    if [[ $? -eq 2 && $out == *"no_such_run: no series.csv"* ]]; then
+        pass "crater_windows.py: a folder that is not a run: exit 2, naming it"
+    else
+        fail "crater_windows.py: a folder that is not a run: exit 2" "$out"
+    fi
+fi
 # A solid block pushed into an outlet: what the outlet takes of it is eroded mass, logged as "outlet".
 mkdir -p "$W/outletcase"
 cat > "$W/outletcase/case.toml" <<'EOF'
