@@ -290,7 +290,7 @@ int main(int argc, char** argv) {
         for (const auto& w : grit::wear::wear_material_library())
             fmt::print("{}: wear (mesh walls): rho = {} kg/m^3, E = {:g} Pa, nu = {}, flow_stress = {:g} Pa, "
                        "elastic_limit = {:g} Pa, vickers_hardness = {} GPa, finnie_k = {}, finnie_psi = {}, "
-                       "bitter_exponent = {}, bitter_roundness = {}, bitter_deformation_factor = {:g} J/m^3, "
+                       "bitter_exponent = {}, bitter_roundness = {}, bitter_deformation_factor = {:g} J/m^3 (unverified: set it), "
                        "oka_K = {} mm^3/kg, oka_k1 = {}, oka_k3 = {}, liggghts_k = {} s^2/m^2\n",
                        w.name, w.density, w.youngs_modulus, w.poisson_ratio, w.flow_stress, w.elastic_limit,
                        w.vickers_hardness, w.finnie_k, w.finnie_psi, w.bitter_exponent, w.bitter_roundness,

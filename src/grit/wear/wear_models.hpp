@@ -192,7 +192,7 @@ inline std::vector<WearMaterial> wear_material_library() {
     steel.vickers_hardness = 1.18;  // Oka et al. 2005 carbon steel (upper value)
     steel.flow_stress = 1.18e9;     // Finnie's flow pressure taken as the hardness
     steel.elastic_limit = 0.35e9;   // yield strength of a structural carbon steel
-    steel.bitter_deformation_factor = 7.7e9;
+    steel.bitter_deformation_factor = 7.7e9;  // not verified against a source (docs/theory.md)
     WearMaterial aluminium;
     aluminium.name = "aluminium";
     aluminium.density = 2700.0;
@@ -201,7 +201,7 @@ inline std::vector<WearMaterial> wear_material_library() {
     aluminium.vickers_hardness = 0.36;  // Oka et al. 2005 aluminium
     aluminium.flow_stress = 0.36e9;
     aluminium.elastic_limit = 0.276e9;  // Al 6061-T6 yield strength
-    aluminium.bitter_deformation_factor = 2.0e9;
+    aluminium.bitter_deformation_factor = 2.0e9;  // not verified against a source (docs/theory.md)
     return {steel, aluminium};
 }
 
