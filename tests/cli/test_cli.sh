@@ -931,8 +931,9 @@ PYEOF
     else
         fail "crater_windows.py: window means against series.csv" "${why:-}; $out"
     fi
-    out=$("$JSON_PY" "$ROOT/scripts/crater_windows.py" "$W/no_such_run" 2>&1)
-    if [[ $? -eq 2 && $out == *"no_such_run: no series.csv"* ]]; then
+    rc=0
+    out=$("$JSON_PY" "$ROOT/scripts/crater_windows.py" "$W/no_such_run" 2>&1) || rc=$?
+    if [[ $rc -eq 2 && $out == *"no_such_run: no series.csv"* ]]; then
         pass "crater_windows.py: a folder that is not a run: exit 2, naming it"
     else
         fail "crater_windows.py: a folder that is not a run: exit 2" "$out"
