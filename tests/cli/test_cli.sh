@@ -195,6 +195,8 @@ expect_input_error "negative spacing" "numerics.particle_spacing" "-0.01" "must 
     run "$HYDRO" --set numerics.particle_spacing=-0.01
 expect_input_error "negative surface triaxiality of eq. (35)" "materials.OFHC_copper.failure_surface_triaxiality" \
     "-1" "must be positive" -- run "$ROOT/cases/demo.toml" --set materials.OFHC_copper.failure_surface_triaxiality=-1
+expect_input_error "negative damage length (non-local damage)" "materials.OFHC_copper.damage_length" \
+    "-0.0003" "must not be negative" -- run "$ROOT/cases/demo.toml" --set materials.OFHC_copper.damage_length=-3e-4
 expect_input_error "unknown material" "fluid[0].material" "unobtainium" "unknown material" -- \
     run "$HYDRO" --set 'fluid[0].material=unobtainium'
 expect_input_error "unknown kernel" "numerics.kernel" "gauss" "must be one of" -- \

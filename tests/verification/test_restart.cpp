@@ -4,6 +4,7 @@
 // checkpoint that does not fit the case is told.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -297,6 +298,22 @@ TEST(Restart, SymmetryPlaneMidRunContinuesBitForBit) {
     check_restart<2>(spec, 1.0e-5, 1.2e-5, false, [](Simulation<2>& s) {
         EXPECT_GT(s.particles().image_count(), 100);
         EXPECT_GT(s.grains()->grains().size(), 0);
+    });
+}
+
+// Non-local damage (a garnet grain at 500 m/s into the x >= 0 half of a copper plate on a symmetry
+// plane): the pair list of the damage average is not saved; rebuilt from the loaded positions it gives
+// the same sums (they take the pairs within the length in ascending index), images included.
+TEST(Restart, NonlocalDamageOnASymmetryPlaneContinuesBitForBit) {
+    grit::parallel::set_threads(2);
+    const auto spec = grit::testing::load_case(
+        "grain_impact_copper_2d/case.toml",
+        {"grains[0].velocity=[0.0, -500.0]", "materials.OFHC_copper.damage_length=6e-5", "domain.symmetry=[\"x\"]",
+         "solid[0].min=[0.0, -1.0e-3]", "time.end=8e-7", "output.interval=1e-7"});
+    check_restart<2>(spec, 5e-7, 8e-7, false, [](Simulation<2>& s) {
+        EXPECT_GT(s.particles().image_count(), 50);
+        const auto& damage = s.particles().fields().get<double>("damage");
+        EXPECT_GT(*std::max_element(damage.data(), damage.data() + damage.size()), 0.05);
     });
 }
 

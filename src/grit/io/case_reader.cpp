@@ -467,6 +467,7 @@ material::Material read_material(const Section& s, const std::string& name) {
             f.D5 = s.number_or("failure_d5", f.D5);
             jc.surface_triaxiality =
                 s.number_or("failure_surface_triaxiality", jc.surface_triaxiality, positive("[-]"));
+            jc.damage_length = s.number_or("damage_length", jc.damage_length, non_negative("[m]"));
             f.reference_strain_rate = st.reference_strain_rate;
             f.room_temperature = st.room_temperature;
             f.melt_temperature = st.melt_temperature;

@@ -210,8 +210,10 @@ std::string describe(const Material& m) {
                 const auto& f = model.failure;  // eq. (35)
                 out += fmt::format("  failure = {}\n  failure_d1 = {}\n  failure_d2 = {}\n  failure_d3 = {}\n"
                                    "  failure_d4 = {}\n  failure_d5 = {}\n"
-                                   "  failure_surface_triaxiality = {} # (the most eq. 35 takes on the surface)\n",
-                                   model.failure_enabled, f.D1, f.D2, f.D3, f.D4, f.D5, model.surface_triaxiality);
+                                   "  failure_surface_triaxiality = {} # (the most eq. 35 takes on the surface)\n"
+                                   "  damage_length = {} # [m] (eq. 36 averaged over it; 0: local, as the paper)\n",
+                                   model.failure_enabled, f.D1, f.D2, f.D3, f.D4, f.D5, model.surface_triaxiality,
+                                   model.damage_length);
             } else if constexpr (std::is_same_v<M, JH2>) {
                 const auto& s = model.strength;  // eq. (38)
                 out += fmt::format(

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -43,6 +44,9 @@ inline std::vector<SolidPointState> drive_point(const Material& m, const DrivenP
             SolidPointState s = point.state;
             for (int k = 1; k <= steps; ++k) {
                 s = update_solid_point(model, m.solid, s, strain_rate, spin, point.pressure, density, dt);
+                // A uniform field's non-local average is the point's own increment.
+                if constexpr (std::is_same_v<std::decay_t<decltype(model)>, JohnsonCook>)
+                    if (model.nonlocal_damage()) accumulate_ductile_damage(s, s.damage_increment);
                 if (k % record_every == 0 || k == steps) history.push_back(s);
             }
         },

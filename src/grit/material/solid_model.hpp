@@ -4,6 +4,7 @@
 // same function, so what the driver verifies is what the particles do.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -31,6 +32,11 @@ struct JohnsonCook {
     /// such a state reaches 2/3 at most (equibiaxial tension). SPH does not hold a surface particle's own
     /// pressure to that; above it, the triaxiality is a discretisation error (docs/theory.md).
     double surface_triaxiality = 2.0 / 3.0;
+    /// The length l over which eq. (36)'s damage is averaged (non-local damage; sph/nonlocal_damage.hpp)
+    /// [m]. 0, the paper's and the default: each point accumulates its own increments (local damage,
+    /// which makes the removal mesh dependent: docs/theory.md, "Removal").
+    double damage_length = 0.0;
+    bool nonlocal_damage() const noexcept { return failure_enabled && damage_length > 0.0; }
 };
 
 /// Johnson-Holmquist (JH-2) brittle strength, damage and bulking. Eq. (41) needs K1 and rho0 of the
@@ -74,7 +80,16 @@ struct SolidPointState {
     double damage = 0.0;                 ///< D of eq. (36) or (39) [-]
     double temperature = 293.0;          ///< [K]
     double bulking_pressure = 0.0;       ///< dp of eqs. (40)-(41) (JH-2 only) [Pa]
+    /// Johnson-Cook: this step's local increment d eps_p / eps_f of eq. (36) [-]; a non-local material
+    /// leaves `damage` to the averaging of these over its damage length (JohnsonCook::damage_length).
+    double damage_increment = 0.0;
 };
+
+/// Adds a damage increment (eq. 36); a failed ductile point (D = 1) carries no shear.
+inline void accumulate_ductile_damage(SolidPointState& s, double increment) noexcept {
+    s.damage = std::min(1.0, s.damage + increment);
+    if (s.damage >= 1.0) s.deviatoric_stress = core::SymTensor3::zero();
+}
 
 /// Jaumann rate of the deviatoric stress, eq. (30): 2G (eps_dot - tr/3 I) + tau W^T + W tau
 /// (the paper's tau^{a c} R^{b c} + tau^{b c} R^{a c}).
@@ -124,6 +139,7 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
     trial = trial.deviator();  // keep it traceless against round-off
     next.deviatoric_stress = trial;
     next.plastic_strain_rate = 0.0;
+    next.damage_increment = 0.0;
     if constexpr (std::is_same_v<Model, JohnsonCook>) {
         const double vm_trial = trial.von_mises();
         const double rate = equivalent_strain_rate(strain_rate);
@@ -158,8 +174,8 @@ SolidPointState update_solid_point(const Model& model, const SolidProperties& pr
                 double triaxiality = vm > 0.0 ? -pressure / vm : 0.0;
                 if (at_surface) triaxiality = std::min(triaxiality, model.surface_triaxiality);
                 const double eps_f = model.failure.failure_strain(triaxiality, next.plastic_strain_rate, s.temperature);
-                next.damage = std::min(1.0, s.damage + d_eps / eps_f);  // eq. (36)
-                if (next.damage >= 1.0) next.deviatoric_stress = core::SymTensor3::zero();
+                next.damage_increment = d_eps / eps_f;  // eq. (36)
+                if (!model.nonlocal_damage()) accumulate_ductile_damage(next, next.damage_increment);
             }
         }
     } else if constexpr (std::is_same_v<Model, JH2>) {

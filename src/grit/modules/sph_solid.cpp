@@ -47,6 +47,14 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     f.base("bulking_pressure").set_output_scope([solid, brittle = brittle_](std::int32_t phase, std::int32_t m) {
         return phase == solid && brittle[static_cast<std::size_t>(m)];
     });
+    std::vector<double> damage_length;
+    for (const auto& m : setup.spec.materials) {
+        const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model);
+        const bool nonlocal = m.phase == Phase::solid && jc && jc->nonlocal_damage();
+        nonlocal_.push_back(nonlocal);
+        damage_length.push_back(nonlocal ? jc->damage_length : 0.0);
+    }
+    nonlocal_damage_ = sph::NonlocalDamage<Dim>(std::move(damage_length), setup.periodic_box);
     parameters_.gravity = core::to_vec<Dim>(setup.spec.gravity);
     parameters_.artificial_stress = setup.spec.artificial_stress;
     parameters_.spacing = setup.spacing;
@@ -131,6 +139,8 @@ void SolidModule<Dim>::update_stress() {
     const double dt = state_.clock.dt;
     failure_von_mises_.assign(static_cast<std::size_t>(ps.size()), std::numeric_limits<double>::quiet_NaN());
     double* failure_vm = failure_von_mises_.data();
+    damage_increment_.resize(static_cast<std::size_t>(ps.size()));
+    double* increment = damage_increment_.data();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const auto& materials = setup_.spec.materials;
     for (std::size_t m = 0; m < materials.size(); ++m) {
@@ -148,6 +158,7 @@ void SolidModule<Dim>::update_stress() {
                     s = material::update_solid_point(model, material.solid, s, rate[i], spin[i], p[i], rho[i], dt,
                                                      at_surface);
                     if (s.damage >= 1.0 && damage_before < 1.0) failure_vm[i] = vm_before;
+                    increment[i] = s.damage_increment;
                     tau[i] = s.deviatoric_stress;
                     eps_p[i] = s.plastic_strain;
                     damage[i] = s.damage;
@@ -159,6 +170,23 @@ void SolidModule<Dim>::update_stress() {
             },
             material.solid_model);
     }
+    if (!nonlocal_damage_.active()) return;
+    // Non-local damage (sph/nonlocal_damage.hpp): the Johnson-Cook materials with a damage length
+    // accumulate the average of their particles' increments; a particle that fails now fails with the
+    // stress it has after this step's return (its failure zeroes it).
+    averaged_increment_.assign(static_cast<std::size_t>(ps.size()), 0.0);
+    nonlocal_damage_.average(ps, increment, averaged_increment_.data());
+    const double* averaged = averaged_increment_.data();
+    parallel::for_each(ps.size(), [&](Index i) {
+        if (ph[i] != solid || !nonlocal_[static_cast<std::size_t>(mat[i])] || ps.is_image(i)) return;
+        material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
+        if (s.damage >= 1.0) return;
+        material::accumulate_ductile_damage(s, averaged[i]);
+        if (s.damage >= 1.0) failure_vm[i] = vm[i];
+        damage[i] = s.damage;
+        tau[i] = s.deviatoric_stress;
+        vm[i] = s.deviatoric_stress.von_mises();
+    });
 }
 
 template <int Dim>

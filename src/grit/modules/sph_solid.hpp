@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "grit/modules/sph_fluid.hpp"
+#include "grit/sph/nonlocal_damage.hpp"
 #include "grit/sph/solid_rates.hpp"
 
 namespace grit::modules {
@@ -43,6 +44,10 @@ private:
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
     /// Per particle, this step: the von Mises stress before a ductile particle failed (its failure zeroes it).
     std::vector<double> failure_von_mises_;
+    std::vector<bool> nonlocal_;  ///< per material: a Johnson-Cook solid with a damage length
+    sph::NonlocalDamage<Dim> nonlocal_damage_;
+    /// Per particle, this step: the local damage increments of eq. (36), and their non-local averages.
+    std::vector<double> damage_increment_, averaged_increment_;
 };
 
 extern template class SolidModule<2>;

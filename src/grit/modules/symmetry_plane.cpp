@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
@@ -25,6 +26,10 @@ SymmetryPlaneModule<Dim>::SymmetryPlaneModule(sim::State<Dim>& state, const sim:
     // the wall pressure, the Shepard density) must see a whole kernel of images: two supports, and a
     // skin for each, as both move by up to half a skin between builds.
     depth_ = 2.0 * (support + skin);
+    // A non-local damage average (sph/nonlocal_damage.hpp) reads images up to its length away.
+    for (const auto& m : setup.spec.materials)
+        if (const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model); jc && jc->nonlocal_damage())
+            depth_ = std::max(depth_, jc->damage_length + skin);
     state.neighbors.before_build([this](particles::SphParticles<Dim>& ps) { make_images(ps); });
     sort_grains();  // grains laid at the start
     const auto& ps = state_.particles;

@@ -590,6 +590,25 @@ TEST_F(CaseReaderTest, PeriodicAxes) {
                       {"domain.periodic=[\"x\"]"}, {"domain.periodic", "[\"x\"]", "solid[0]", "not support solids"});
 }
 
+// The Johnson-Cook damage length (non-local damage): 0 by default (the paper's local law), read from a
+// material's section, and refused when negative.
+TEST_F(CaseReaderTest, DamageLengthOfAJohnsonCookSolid) {
+    const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "awj_copper_2d" / "case.toml";
+    auto copper = [](const CaseSpec& c) {
+        for (const auto& m : c.materials)
+            if (m.name == "OFHC_copper") return std::get<grit::material::JohnsonCook>(m.solid_model);
+        ADD_FAILURE() << "no OFHC_copper";
+        return grit::material::JohnsonCook{};
+    };
+    EXPECT_EQ(copper(read_case(file)).damage_length, 0.0);
+    EXPECT_FALSE(copper(read_case(file)).nonlocal_damage());
+    const auto jc = copper(read_case(file, {"materials.OFHC_copper.damage_length=3e-4"}));
+    EXPECT_DOUBLE_EQ(jc.damage_length, 3e-4);
+    EXPECT_TRUE(jc.nonlocal_damage());
+    expect_error_file(file, {"materials.OFHC_copper.damage_length=-1e-4"},
+                      {"materials.OFHC_copper.damage_length", "-0.0001"});
+}
+
 // Brittle solids (JH-2): the shipped compression case, its defaults, and errors naming key and reason.
 TEST_F(CaseReaderTest, BrittleSolidKeysAndErrors) {
     const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "compression_sandstone_2d" / "case.toml";

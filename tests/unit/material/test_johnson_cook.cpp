@@ -406,6 +406,37 @@ TEST(SolidPointDriver, DamageFollowsTheIntegral) {
     EXPECT_EQ(h.back().plastic_strain, failed->plastic_strain);
 }
 
+// (c''') A damage length (non-local damage, sph/nonlocal_damage.hpp) averages eq. (36)'s increments over
+// the neighbourhood; a single driven point is a uniform field, its own average: the same history as the
+// local law, bit for bit, and the point alone (update_solid_point) reports its increment without
+// accumulating it (the solid module accumulates the average).
+TEST(SolidPointDriver, ADamageLengthLeavesAUniformFieldAsTheLocalLaw) {
+    Material local = library_material("OFHC_copper");
+    Material nonlocal = local;
+    std::get<JohnsonCook>(nonlocal.solid_model).damage_length = 3e-4;
+    const double p = -200.0e6, gamma_dot = 1.0, dt = 2.0e-5;
+    const int steps = 120000;
+    const auto a = drive_point(local, DrivenPoint{grit::material::rest_state(local), p}, pure_shear(gamma_dot),
+                               Spin{}, dt, steps, 100);
+    const auto b = drive_point(nonlocal, DrivenPoint{grit::material::rest_state(nonlocal), p},
+                               pure_shear(gamma_dot), Spin{}, dt, steps, 100);
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(a.back().damage, 1.0);  // it fails within the steps
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].damage, b[k].damage) << k;
+        EXPECT_EQ(a[k].plastic_strain, b[k].plastic_strain) << k;
+        EXPECT_EQ(a[k].deviatoric_stress.von_mises(), b[k].deviatoric_stress.von_mises()) << k;
+    }
+    const auto& jc = std::get<JohnsonCook>(nonlocal.solid_model);
+    SolidPointState s = grit::material::rest_state(nonlocal);
+    for (int k = 0; k < 1000; ++k)
+        s = grit::material::update_solid_point(jc, nonlocal.solid, s, pure_shear(gamma_dot), Spin{}, p,
+                                               nonlocal.reference_density(), dt);
+    EXPECT_GT(s.plastic_strain, 0.0);
+    EXPECT_GT(s.damage_increment, 0.0);
+    EXPECT_EQ(s.damage, 0.0);
+}
+
 // (d) Rigid rotation (spin only, zero strain rate): the Jaumann rate (eq. 30) gives tau_dot = W tau - tau W,
 // solved by tau(t) = Q tau0 Q^T with Q = exp(W t), so sigma_vm is constant. Forward Euler grows |tau|^2 by
 // dt^2 |W tau - tau W|^2 per step (at most 4 w^2 dt^2 |tau|^2), i.e. sigma_vm drifts by at most
