@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <unordered_map>
+#include <utility>
 
 #include "grit/core/types.hpp"
 #include "grit/parallel/parallel.hpp"
