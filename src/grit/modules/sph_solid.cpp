@@ -51,7 +51,6 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     for (const auto& m : setup.spec.materials) {
         const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model);
         const bool nonlocal = m.phase == Phase::solid && jc && jc->nonlocal_damage();
-        nonlocal_.push_back(nonlocal);
         damage_length.push_back(nonlocal ? jc->damage_length : 0.0);
     }
     nonlocal_damage_ = sph::NonlocalDamage<Dim>(std::move(damage_length), setup.periodic_box);
@@ -174,11 +173,11 @@ void SolidModule<Dim>::update_stress() {
     // Non-local damage (sph/nonlocal_damage.hpp): the Johnson-Cook materials with a damage length
     // accumulate the average of their particles' increments; a particle that fails now fails with the
     // stress it has after this step's return (its failure zeroes it).
-    averaged_increment_.assign(static_cast<std::size_t>(ps.size()), 0.0);
+    averaged_increment_.resize(static_cast<std::size_t>(ps.size()));  // written for the averaging particles
     nonlocal_damage_.average(ps, increment, averaged_increment_.data());
     const double* averaged = averaged_increment_.data();
     parallel::for_each(ps.size(), [&](Index i) {
-        if (ph[i] != solid || !nonlocal_[static_cast<std::size_t>(mat[i])] || ps.is_image(i)) return;
+        if (ph[i] != solid || !nonlocal_damage_.averages(mat[i]) || ps.is_image(i)) return;
         material::SolidPointState s{tau[i], eps_p[i], 0.0, damage[i], temperature[i], bulking[i]};
         if (s.damage >= 1.0) return;
         material::accumulate_ductile_damage(s, averaged[i]);

@@ -44,7 +44,6 @@ private:
     std::vector<double> rubble_density_;  ///< per JH-2 material: below it a fractured particle has come apart
     /// Per particle, this step: the von Mises stress before a ductile particle failed (its failure zeroes it).
     std::vector<double> failure_von_mises_;
-    std::vector<bool> nonlocal_;  ///< per material: a Johnson-Cook solid with a damage length
     sph::NonlocalDamage<Dim> nonlocal_damage_;
     /// Per particle, this step: the local damage increments of eq. (36), and their non-local averages.
     std::vector<double> damage_increment_, averaged_increment_;

@@ -33,6 +33,8 @@ public:
 
     /// True when some material averages its damage.
     bool active() const noexcept { return largest_ > 0.0; }
+    /// True when material m averages its damage.
+    bool averages(std::int32_t m) const noexcept { return length_[static_cast<std::size_t>(m)] > 0.0; }
 
     /// For every solid particle of a non-local material that is not an image, `averaged[i]` = the
     /// average above of `local` (per particle, this step's local increments dD_j); others are left.
