@@ -4,4 +4,5 @@ set(GRIT_DEM_TEST_SOURCES
   unit/dem/test_grain_neighbors.cpp
   unit/dem/test_dem_system.cpp
   unit/dem/test_head_on_pair.cpp
+  unit/dem/test_grain_particle_contact.cpp
 )
