@@ -83,8 +83,8 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     // Eq. (13) removes the overlap in one step only if the grain does not move: its stiffness
     // 2 m_a / dt^2 gives the grain and the particles it touches omega^2 dt^2 = 2 (1 + sum m_a / M), which
     // leap-frog integrates stably only up to 4. Particles as heavy as the grain (a copper particle at
-    // 0.1 mm spacing is 0.7 of a 0.2 mm garnet grain in 2D) made each impact create energy, up to three
-    // times the grain's. Scaling every contact of grain g by M / (M + sum m_a) keeps omega^2 dt^2 = 2 for
+    // 0.1 mm spacing is 0.7 of a 0.2 mm garnet grain in 2D) made an impact end with up to nine times the
+    // grain's energy, and blow up at 0.125 mm. Scaling every contact of grain g by M / (M + sum m_a) keeps omega^2 dt^2 = 2 for
     // any mass ratio, and is eq. (13) itself for a grain much heavier than what it touches
     // (docs/theory.md, "The penalty contact with light grains").
     const double* grain_mass = grains.mass();

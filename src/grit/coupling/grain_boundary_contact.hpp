@@ -2,6 +2,8 @@
 // seed paper (eqs. 12-14): an SPH particle closer than one initial spacing d_ini to a grain's surface is
 // pushed out along the grain's normal with the force that would remove the overlap in one step, plus a
 // tangential force capped by Coulomb friction; the grain takes the opposite force at the contact point.
+// Both are scaled by the grain's share M / (M + sum m_a) of the particles it touches, so that particles
+// as heavy as the grain do not make the contact unstable (docs/theory.md, "the grain's share").
 #pragma once
 
 #include <vector>
