@@ -84,9 +84,9 @@ void GrainBoundaryContact<Dim>::compute(const dem::GrainSet<Dim>& grains,
     // 2 m_a / dt^2 gives the grain and the particles it touches omega^2 dt^2 = 2 (1 + sum m_a / M), which
     // leap-frog integrates stably only up to 4. Particles as heavy as the grain (a copper particle at
     // 0.1 mm spacing is 0.7 of a 0.2 mm garnet grain in 2D) made an impact end with up to nine times the
-    // grain's energy, and blow up at 0.125 mm. Scaling every contact of grain g by M / (M + sum m_a) keeps omega^2 dt^2 = 2 for
-    // any mass ratio, and is eq. (13) itself for a grain much heavier than what it touches
-    // (docs/theory.md, "The penalty contact with light grains").
+    // grain's energy, and blow up at 0.125 mm. Scaling every contact of grain g by M / (M + sum m_a)
+    // keeps omega^2 dt^2 = 2 for any mass ratio, and is eq. (13) itself for a grain much heavier than what
+    // it touches (docs/theory.md, "the grain's share").
     const double* grain_mass = grains.mass();
     parallel::for_each(ng, [&](Index g) {
         double touching_mass = 0.0;

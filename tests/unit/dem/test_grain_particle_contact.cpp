@@ -24,7 +24,7 @@ struct Collision {
 
 // A garnet disc (d = 0.2 mm, 2D: kg/m) at 500 m/s straight down onto one free solid particle of
 // `mass_ratio` times its mass, d_ini = 0.1 mm below its surface less one step's travel; leap-frog with
-// the same dt for both (sim/grain_phase.cpp), until they separate.
+// the same dt for both (as the SPH and grain modules step them), until they separate.
 Collision head_on(double mass_ratio, int touching_particles = 1) {
     const double dt = 1.0e-9, d_ini = 1.0e-4, speed = 500.0;
     grit::dem::GrainSet<2> grains;
