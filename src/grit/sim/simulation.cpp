@@ -37,6 +37,7 @@
 #include "grit/sim/progress.hpp"
 #include "grit/sim/run_estimate.hpp"
 #include "grit/sim/run_log.hpp"
+#include "grit/sim/step_to_target.hpp"
 #include "grit/sim/version.hpp"
 
 namespace grit::sim {
@@ -415,7 +416,7 @@ void Simulation<Dim>::advance_to(double target, const std::function<void()>& aft
     if (!primed_) prime();
     auto& clock = state_.clock;
     while (clock.time < target * (1.0 - 1e-12)) {
-        if (clock.time + clock.dt > target) clock.dt = target - clock.time;  // land exactly on the target time
+        clock.dt = step_toward(clock.time, target, clock.dt);  // land exactly on the target time, in equal steps
         step();
         if (after_each_step) after_each_step();
     }
@@ -770,7 +771,7 @@ RunSummary Simulation<Dim>::run() {
         const double end = spec_.end_time;
         while (c.time < end * (1.0 - 1e-12)) {
             const double target = std::min(end, next_output_);
-            if (c.time + c.dt > target) c.dt = target - c.time;  // land exactly on the output time
+            c.dt = step_toward(c.time, target, c.dt);  // land exactly on the output time, in equal steps
             step();
             if (governor) {
                 if (const std::string change = governor->after_step(); !change.empty()) {
