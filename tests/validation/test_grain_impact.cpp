@@ -61,7 +61,7 @@ double total_energy(const grit::sim::Simulation<2>& sim) {
 // the time-discrete contact leaves 0.96-1.14 of the energy over such phases (and friction on the grain
 // takes a few per cent; docs/validation.md, "A grain on particles as heavy as itself"). Eq. (13) as
 // printed ended these impacts with 0.7-9.3 times the grain's energy at 0.1 mm and 1.0-2.4 at 0.067 mm.
-// One step lands on the end time only (a step shortened in mid-contact is a separate error, noted there).
+// Stopped at the end time only (stopping often, in mid-contact, is the next test).
 TEST(GrainImpact, ImpactOnCoarseParticlesCreatesNoEnergy) {
     for (const char* dx : {"1.0e-4", "6.6666e-5"}) {
         for (const char* height : {"4.0e-4", "4.01e-4", "4.03e-4"}) {

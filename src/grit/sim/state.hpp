@@ -13,8 +13,8 @@
 namespace grit::sim {
 
 /// Simulated time and the step counter. `dt` is the next step's size (the time-step stage sets it at
-/// the end of a step; a step that lands on an output time is shortened), `dt_stable` the last stable
-/// step before any shortening.
+/// the end of a step; the steps to an output time are shortened, evenly, to land on it: step_toward),
+/// `dt_stable` the last stable step before any shortening.
 struct Clock {
     double time = 0.0;
     long step = 0;
