@@ -1,5 +1,5 @@
-// The grain contact loops: grain-grain over each pair once (neighbors::sum_pairs_once: the grain of
-// lower index evaluates the pair and both receive its force, summed in an order the lists fix) and
+// The grain contact loops: grain-grain over each pair once (the grain of lower index evaluates the pair
+// and both receive its force, summed in an order the lists fix: SlabBlocks) and
 // grain-wall over the planes (each grain writes only its own force, torque and history), so results are
 // bit-identical for any thread count. Law formulas live in contact_laws.hpp; this file holds geometry and
 // loops.
@@ -21,7 +21,9 @@
 #include "grit/dem/contact_laws.hpp"
 #include "grit/dem/grain_neighbors.hpp"
 #include "grit/dem/grain_set.hpp"
+#include "grit/dem/pair_images.hpp"
 #include "grit/dem/plane_wall.hpp"
+#include "grit/dem/slab_blocks.hpp"
 #include "grit/dem/spin.hpp"
 #include "grit/dem/grain_loop.hpp"
 #include "grit/neighbors/half_lists.hpp"
@@ -85,27 +87,13 @@ template <int Dim, class Law>
     }
 }
 
-/// What the pair pass adds up per grain: the forces of its pairs, their lever moments n x F_t (not yet
-/// times its radius) and how many of them touch.
-template <int Dim>
-struct PairSum {
-    core::Vec<Dim> force = core::Vec<Dim>::zero();
-    Spin<Dim> lever_moment = zero_spin<Dim>();
-    std::int32_t touching = 0;
-    PairSum& operator+=(const PairSum& o) noexcept {
-        force += o.force;
-        lever_moment += o.lever_moment;
-        touching += o.touching;
-        return *this;
-    }
-};
-
-/// Scratch of the pair pass, kept between steps: neighbors::sum_pairs_once's own and spill rows, and per
-/// pair entry 1 where the pair touched at the last pass (so a pair apart costs a byte, not its history).
+/// Scratch of the pair pass, kept between steps: per pair entry 1 where the pair touched at the last pass
+/// (so a pair apart costs a byte, not its history), and per grain its touching pairs and w R.
 template <int Dim>
 struct PairScratch {
-    std::vector<PairSum<Dim>> own, spill;
     std::vector<std::uint8_t> touching;
+    /// How many pairs of each grain touch at this pass.
+    std::vector<std::int32_t> touching_pairs;
     /// w_i R_i of every grain, rounded before the pairs add them: a pair then sees the same sum
     /// w_a R_a + w_b R_b whichever of its grains evaluates it (a contracted w_b * R_b + w_a R_a would not be).
     std::vector<Spin<Dim>> spin_radius;
@@ -118,23 +106,33 @@ struct PairScratch {
 /// once) is evaluated by its grain of lower index, body a, with the tangential history of its entry;
 /// body a receives the force and b its exact negative (bit for bit), both the lever moment n x F_t (the
 /// torque of body k is R_k n x F_t for both: F_t and the lever flip together). Sets force[i] = the sum of
-/// i's pair forces and torque[i] = the sum of their lever moments (not yet times R_i) for every grain,
-/// and grain_contact[i] (touches another grain), adding one to collisions[i] where that contact begins. A
-/// pair apart costs one distance test, and clears its history when it parts. finish_grain_forces() then
-/// completes every grain. (Completing each grain in the pair pass's last loop instead, saving a pass over
-/// the grains, was no faster: docs/performance.md.)
+/// i's pair forces, torque[i] = the sum of their lever moments (not yet times R_i) and
+/// scratch.touching_pairs[i] for every grain. The pairs add straight into both grains, block by block of
+/// `blocks` (SlabBlocks: the blocks of one colour add to disjoint grains), a's own pairs summed first; so
+/// each grain's sum runs in an order the lists fix. A pair apart costs one distance test, and clears its
+/// history when it parts. finish_grain_forces() then completes every grain.
 template <int Dim, class Law>
-void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, ContactHistory<Dim>& history,
-                     const GrainDomain<Dim>& domain, const PairMaterialTable& materials, const Law& law, double dt,
-                     PairScratch<Dim>& scratch) {
+void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, const SlabBlocks& blocks,
+                     const PairImages<Dim>& images, ContactHistory<Dim>& history, const PairMaterialTable& materials,
+                     const Law& law, double dt, PairScratch<Dim>& scratch) {
     using Vec = core::Vec<Dim>;
+    const Index grain_count = grains.size();
     if (scratch.touching.size() != pairs.upper_size()) scratch.reset(pairs.upper_size());
-    scratch.spin_radius.resize(static_cast<std::size_t>(grains.size()));
+    scratch.spin_radius.resize(static_cast<std::size_t>(grain_count));
+    scratch.touching_pairs.resize(static_cast<std::size_t>(grain_count));
+    Vec* force = grains.force();
+    Spin<Dim>* torque = grains.torque();
     {
         Spin<Dim>* wr = scratch.spin_radius.data();
+        std::int32_t* count = scratch.touching_pairs.data();
         const Spin<Dim>* w = std::as_const(grains).angular_velocity();
         const double* r = std::as_const(grains).radius();
-        for_each_grain(grains.size(), [&](Index i) { wr[i] = w[i] * r[i]; });
+        for_each_grain(grain_count, [&](Index i) {
+            wr[i] = w[i] * r[i];
+            force[i] = Vec::zero();
+            torque[i] = zero_spin<Dim>();
+            count[i] = 0;
+        });
     }
     // The arrays, copied into each grain's call: a local copy stays in registers, where pointers read
     // through the closure would be reloaded after every store (which may alias them).
@@ -147,12 +145,18 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, C
         const std::int32_t* material;
         Vec* h;
         const Index* partner;
+        const std::uint8_t* image;
+        const Vec* shift;
         std::uint8_t* touching;
+        Vec* force;
+        Spin<Dim>* torque;
+        std::int32_t* count;
     } arrays{std::as_const(grains).position(), std::as_const(grains).velocity(),
              std::as_const(scratch.spin_radius).data(), std::as_const(grains).radius(),
              std::as_const(grains).mass(), std::as_const(grains).material(), history.values(), pairs.upper(),
-             scratch.touching.data()};
-    auto visit = [&](Index a, PairSum<Dim>& sum_a, auto&& share) {
+             images.codes_per_pair(), images.shifts(), scratch.touching.data(), force, torque,
+             scratch.touching_pairs.data()};
+    auto visit = [&](Index a) {
         const auto p = arrays;
         const Vec xa = p.x[a], va = p.v[a];
         const Spin<Dim> wra = p.wr[a];
@@ -164,7 +168,7 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, C
         std::int32_t touching_a = 0;
         for (Index k = pairs.upper_begin(a); k < pairs.upper_end(a); ++k) {  // partners of higher index
             const Index b = p.partner[k];
-            const Vec d = domain.nearest_image(p.x[b] - xa);
+            const Vec d = (p.x[b] - xa) + p.shift[p.image[k]];  // the pair's nearest periodic image
             const double reach = ra + p.radius[b];
             const double r2 = core::norm2(d);
             if (r2 >= reach * reach) {
@@ -184,43 +188,33 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, C
                                       disc_force_scale<Dim>(ma, sphere_a, mb, sphere_b));
             p.h[k] = res.history;
             p.touching[k] = 1;
-            PairSum<Dim>& sum_b = share(b);
-            sum_b.force -= res.force;
-            sum_b.lever_moment += res.lever_moment;
-            ++sum_b.touching;
+            p.force[b] -= res.force;
+            p.torque[b] += res.lever_moment;
+            ++p.count[b];
             fa += res.force;
             ta += res.lever_moment;
             ++touching_a;
         }
-        sum_a.force += fa;
-        sum_a.lever_moment += ta;
-        sum_a.touching += touching_a;
+        p.force[a] += fa;
+        p.torque[a] += ta;
+        p.count[a] += touching_a;
     };
-    Vec* force = grains.force();
-    Spin<Dim>* torque = grains.torque();
-    std::int32_t* in_contact = grains.grain_contact();
-    std::int32_t* collisions = grains.collisions();
-    auto finish = [&](Index i, const PairSum<Dim>& total) {
-        force[i] = total.force;
-        torque[i] = total.lever_moment;
-        // A contact that begins at this pass is a collision (a repeated pass over the same state, dt = 0,
-        // finds the flag already set).
-        const std::int32_t now = total.touching > 0;
-        collisions[i] += now & (in_contact[i] == 0);
-        in_contact[i] = now;
-    };
-    neighbors::sum_pairs_once(pairs, scratch.own, scratch.spill, visit, finish);
+    blocks.for_each_block(grain_count, [&](Index j) {
+        for (Index a = blocks.begin(j); a < blocks.end(j); ++a) visit(a);
+    });
 }
 
 /// Completes the force stage after grain_pair_pass(): adds to each grain its weight m g and the contacts
 /// of the plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall is body
 /// b of infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick
-/// F/m, w += half_kick T/I (the second half kick of a step no external stage adds forces to). Each grain
-/// writes only its own data.
+/// F/m, w += half_kick T/I (the second half kick of a step no external stage adds forces to). With
+/// `touching_pairs` (the pair pass's count per grain; null when grains pass through one another) it sets
+/// grain_contact[i] (touches another grain) and adds one to collisions[i] where that contact begins. Each
+/// grain writes only its own data.
 template <int Dim, class Law>
 void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
                          const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
-                         const Law& law, double dt, double half_kick) {
+                         const Law& law, double dt, double half_kick, const std::int32_t* touching_pairs) {
     using Vec = core::Vec<Dim>;
     const Vec* x = std::as_const(grains).position();
     Vec* v = grains.velocity();
@@ -237,7 +231,16 @@ void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, c
     const auto& fields = std::as_const(grains).fields();
     const std::int32_t* straddling =
         fields.has(straddling_field) ? fields.template get<std::int32_t>(straddling_field).data() : nullptr;
+    std::int32_t* in_contact = grains.grain_contact();
+    std::int32_t* collisions = grains.collisions();
     for_each_grain(grains.size(), [&](Index i) {
+        if (touching_pairs) {
+            // A contact that begins at this pass is a collision (a repeated pass over the same state, dt =
+            // 0, finds the flag already set).
+            const std::int32_t now = touching_pairs[i] > 0;
+            collisions[i] += now & (in_contact[i] == 0);
+            in_contact[i] = now;
+        }
         Vec f = gravity * mass[i] + force[i];
         Spin<Dim> t = torque[i] * radius[i];
         for (std::size_t s = 0; s < walls.size(); ++s) {
@@ -245,7 +248,8 @@ void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, c
             Vec& h = wall_history[s][i];
             const double gap = core::dot(x[i] - wall.point, wall.normal);
             if (gap >= radius[i] || (wall.frictionless && straddling && straddling[i] > 0)) {
-                h = Vec::zero();
+                // Most grains are off most walls: clearing only a history that is set keeps their lines clean.
+                if (core::norm2(h) != 0.0) h = Vec::zero();
                 continue;
             }
             const Vec n = -wall.normal;  // from the grain (a) to the wall (b)

@@ -78,11 +78,16 @@ inline TangentialContact<Dim> coulomb_spring(const core::Vec<Dim>& history, cons
     const double kt = normal.tangential_stiffness;
     const double limit = friction * std::abs(normal.force);
     const double spring2 = kt * kt * core::norm2(history);
+    // One path for both cases, the branch choosing two numbers: two returns of the pair made GCC merge
+    // them through the stack, read back in one load that waited on three stores (a failed forwarding).
+    // h * 1 and a damping of 0 change no bit.
+    double scale = 1.0, damping = normal.tangential_damping;
     if (spring2 > limit * limit) {
-        const core::Vec<Dim> h = history * (limit / std::sqrt(spring2));
-        return {h * (-kt), h};
+        scale = limit / std::sqrt(spring2);
+        damping = 0.0;
     }
-    return {history * (-kt) - tangential_velocity * normal.tangential_damping, history};
+    const core::Vec<Dim> h = history * scale;
+    return {h * (-kt) - tangential_velocity * damping, h};
 }
 
 /// Linear spring-dashpot with Coulomb friction, first seed paper eqs. (2)-(11):

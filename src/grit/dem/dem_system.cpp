@@ -128,6 +128,8 @@ void DemSystem<Dim>::rebuild_neighbors() {
 template <int Dim>
 void DemSystem<Dim>::cut_pairs() {
     pairs_.update(list_.offsets(), list_.indices(), list_.grain_count(), list_.version());
+    blocks_.assign(list_.slab_starts());
+    images_.assign(parameters_.domain, pairs_, list_.reference_positions());
 }
 
 template <int Dim>
@@ -152,7 +154,7 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
     std::visit(
         [&](const auto& law) {
             if (parameters_.grain_pairs) {
-                grain_pair_pass<Dim>(grains_, pairs_, history_, parameters_.domain, pair_table_, law, dt, scratch_);
+                grain_pair_pass<Dim>(grains_, pairs_, blocks_, images_, history_, pair_table_, law, dt, scratch_);
             } else {  // grains pass through one another: no pair forces, no contacts
                 Vec* f = grains_.force();
                 Spin<Dim>* t = grains_.torque();
@@ -172,7 +174,8 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
                 (void)time;
             }
             finish_grain_forces<Dim>(grains_, parameters_.gravity, walls_, wall_history, pair_table_, law, dt,
-                                     half_kick);
+                                     half_kick,
+                                     parameters_.grain_pairs ? scratch_.touching_pairs.data() : nullptr);
         },
         law_);
     forces_ready_ = true;

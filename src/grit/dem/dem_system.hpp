@@ -98,7 +98,7 @@ public:
     /// at that speed against an equal grain.
     double stable_time_step(double impact_speed = 0.0) const;
 
-    /// Number of grain-grain pairs in contact (each counted once) and of neighbour-list entries.
+    /// Number of grain-grain pairs in contact and of pairs in the neighbour lists (each counted once).
     std::size_t contact_pairs() const;
     std::size_t list_entries() const noexcept { return list_.entry_count(); }
 
@@ -134,12 +134,13 @@ private:
     std::vector<PlaneWall<Dim>> walls_;
     std::unique_ptr<MeshWalls> meshes_;
     GrainNeighborList<Dim> list_;
-    // A 16th of the pairs a block, without upper bound: with the grains in cells of x slowest, a block's
-    // pairs reach a whole slab of cells ahead (its spill), so blocks much larger than a slab pay
-    // (docs/performance.md, "DEM: each pair once by index").
-    neighbors::HalfLists pairs_{neighbors::HalfLists::Blocking{16, 1024, std::int64_t{1} << 40}};
+    // The lists' rows as HalfLists (each pair once; their blocks go unused: the pair pass runs over
+    // blocks_, whole slabs of cells coloured so no grain receives from two blocks at once).
+    neighbors::HalfLists pairs_;
     ContactHistory<Dim> history_;
     PairScratch<Dim> scratch_;
+    SlabBlocks blocks_;        // the pair pass's blocks over the current lists
+    PairImages<Dim> images_;   // each listed pair's periodic image
     std::vector<Index> order_;
     double time_ = 0.0;
     double skin_ = -1.0;

@@ -26,11 +26,13 @@ void GrainNeighborList<Dim>::build(const Grid& grid, const std::vector<Index>& c
                                    const GrainDomain<Dim>& domain, const Vec* x, const double* radius, Index n,
                                    double skin) {
     skin_ = skin;
-    // Visits every grain j != i within R_i + R_j + skin in the 3^Dim cells around i's cell.
+    // Visits every grain j > i within R_i + R_j + skin in the 3^Dim cells around i's cell. Grains are
+    // sorted by cell: a cell numbered below i's holds only grains of lower index, one above only higher.
     auto scan = [&](Index i, auto&& visit) {
+        const Index own = grid.cell_of(x[i]);
         grid.for_each_cell_around(grid.coords(x[i]), [&](Index cell) {
-            for (Index j = cell_start[cell]; j < cell_start[cell + 1]; ++j) {
-                if (j == i) continue;
+            if (cell < own) return;
+            for (Index j = cell == own ? i + 1 : cell_start[cell]; j < cell_start[cell + 1]; ++j) {
                 const double reach = radius[i] + radius[j] + skin;
                 if (core::norm2(domain.nearest_image(x[j] - x[i])) < reach * reach) visit(j);
             }
@@ -51,6 +53,12 @@ void GrainNeighborList<Dim>::build(const Grid& grid, const std::vector<Index>& c
         std::sort(indices_.begin() + offsets_[static_cast<std::size_t>(i)], indices_.begin() + k);
     });
     reference_positions_.assign(x, x + n);
+    // x is the slowest axis of the cell numbering: slab s is the run of cells s * cells_per_slab onwards.
+    const Index cells_per_slab = grid.cell_count() / grid.dims[0];
+    slab_starts_.resize(static_cast<std::size_t>(grid.dims[0]) + 1);
+    for (Index s = 0; s <= grid.dims[0]; ++s)
+        slab_starts_[static_cast<std::size_t>(s)] = cell_start[static_cast<std::size_t>(s * cells_per_slab)];
+    periodic_x_ = grid.periodic[0];
     version_ = neighbors::next_list_version();
 }
 

@@ -1,7 +1,7 @@
 // Grain neighbour search: a cell grid sized by the largest grain (largest diameter + skin), optional
-// periodic axes, grains sorted by cell, and full Verlet lists in compressed rows (each pair appears in
-// both grains' rows; the contact pass cuts them into each pair once, neighbors::HalfLists). The lists
-// stay valid until a grain has moved more than skin/2.
+// periodic axes, grains sorted by cell, and Verlet lists in compressed rows holding each pair once, in
+// the row of its grain of lower index (the contact pass evaluates each pair once, by that grain). The
+// lists stay valid until a grain has moved more than skin/2.
 #pragma once
 
 #include <array>
@@ -22,7 +22,8 @@ namespace grit::dem {
 template <int Dim>
 using GrainDomain = neighbors::PeriodicBox<Dim>;
 
-/// Full Verlet lists of grains within R_i + R_j + skin, built over grains sorted by cell.
+/// Verlet lists of grains within R_i + R_j + skin, each pair once (in its lower index's row), built over
+/// grains sorted by cell.
 template <int Dim>
 class GrainNeighborList {
 public:
@@ -37,7 +38,7 @@ public:
     static Grid make_grid(const GrainDomain<Dim>& domain, const Vec* x, Index n, double cell_size);
 
     /// Builds the lists of x[0..n), which must be wrapped and sorted by the cells of `grid`, with
-    /// `cell_start` from neighbors::sort_by_cell. Each row in ascending index order.
+    /// `cell_start` from neighbors::sort_by_cell. Row i holds i's partners of higher index, ascending.
     void build(const Grid& grid, const std::vector<Index>& cell_start, const GrainDomain<Dim>& domain,
                const Vec* x, const double* radius, Index n, double skin);
 
@@ -50,6 +51,12 @@ public:
     std::size_t entry_count() const noexcept { return indices_.size(); }
     /// Changes with every build, and is never the same for two lists (for neighbors::HalfLists::update).
     std::uint64_t version() const noexcept { return version_; }
+    /// The first grain of each slab of cells along x (the grid's slowest axis), one more for the end:
+    /// slab s holds grains [slab_starts()[s], slab_starts()[s + 1]). A grain's partners lie in its own
+    /// slab or the next ones on either side (the cells are at least a list cutoff wide).
+    const std::vector<Index>& slab_starts() const noexcept { return slab_starts_; }
+    /// Whether x is periodic (the last slab's neighbours then include the first's).
+    bool periodic_x() const noexcept { return periodic_x_; }
 
     /// True when a grain has moved more than skin/2 since the build, or the count has changed.
     bool stale(const Vec* x, Index n) const;
@@ -64,6 +71,8 @@ private:
     std::vector<Index> offsets_{0};
     std::vector<Index> indices_;
     std::vector<Vec> reference_positions_;
+    std::vector<Index> slab_starts_{0};
+    bool periodic_x_ = false;
     std::uint64_t version_ = 0;
     double skin_ = 0.0;
 };
