@@ -25,12 +25,12 @@ GrainMaterial soft_glass() { return {"soft_glass", 2500.0, 5e6, 0.45, 0.5, 0.3, 
 
 /// Spheres of 3 mm on a jittered lattice in a box periodic in x and y, falling onto a plane at z = 0:
 /// a small version of the settling benchmark.
-DemSystem<3> settling_box(const std::string& law, int n_side) {
+DemSystem<3> settling_box(const std::string& law, int n_side, double s = 0.0033) {
     DemParameters<3> p;
     p.contact_law = law;
     p.gravity = {{0.0, 0.0, -9.81}};
     p.skin = 0.001;
-    const double s = 0.0033, length = n_side * s;
+    const double length = n_side * s;
     p.domain.periodic = {true, true, false};
     p.domain.lower = {{0.0, 0.0, 0.0}};
     p.domain.upper = {{length, length, 1.0}};
@@ -119,8 +119,14 @@ TEST(DemSystem, OneAndTwoThreadsGiveIdenticalGrains) {
     std::vector<std::map<int, Vec<3>>> results;
     for (int threads : {1, 2}) {
         grit::parallel::set_threads(threads);
-        DemSystem<3> sys = settling_box("hertz", 12);  // 576 grains: the loops run in parallel
-        for (int k = 0; k < 2000; ++k) sys.step(1e-5);
+        // 2,304 grains, above parallel::serial_below, over 17 slabs of cells: the pair pass runs its
+        // coloured blocks (SlabBlocks) in parallel. A lattice of 2.9 mm for 3 mm grains: every grain
+        // touches its neighbours from the first step.
+        DemSystem<3> sys = settling_box("hertz", 24, 0.0029);
+        for (int k = 0; k < 200; ++k) sys.step(1e-5);
+        ASSERT_GE(sys.grains().size(), grit::parallel::serial_below);
+        ASSERT_GE(sys.neighbors().slab_starts().size(), 7u);
+        ASSERT_GT(sys.contact_history().active_pairs(), 2000u);
         results.push_back(positions_by_id(sys));
     }
     grit::parallel::set_threads(2);
