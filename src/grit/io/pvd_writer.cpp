@@ -10,29 +10,9 @@
 #include <utility>
 
 #include "grit/io/vtu_writer.hpp"
+#include "grit/io/xml_escape.hpp"
 
 namespace grit::io {
-
-namespace {
-
-/// Escapes the five XML special characters for use inside a double-quoted attribute.
-std::string xml_escape(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (const char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
-}  // namespace
 
 PvdWriter::PvdWriter(std::filesystem::path file) : file_(std::move(file)) {}
 

@@ -18,29 +18,14 @@
 
 #include <unistd.h>
 
+#include "grit/io/xml_escape.hpp"
+
 namespace grit::io {
 
 static_assert(std::endian::native == std::endian::little,
               "the VTU writer emits the host byte order and declares LittleEndian");
 
 namespace {
-
-/// Escapes the five XML special characters for use inside a double-quoted attribute.
-std::string xml_escape(std::string_view s) {
-    std::string out;
-    out.reserve(s.size());
-    for (const char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 /// One DataArray of the appended block: its XML description and its payload size.
 struct Block {
