@@ -248,7 +248,7 @@ std::size_t DemSystem<Dim>::contact_pairs() const {
         for (Index k = list_.begin(i); k < list_.end(i); ++k) {
             const Index j = nb[k];
             const double reach = r[i] + r[j];
-            c += j > i && core::norm2(parameters_.domain.nearest_image(x[j] - x[i])) < reach * reach;
+            c += core::norm2(parameters_.domain.nearest_image(x[j] - x[i])) < reach * reach;  // rows: each pair once
         }
         return c;
     });

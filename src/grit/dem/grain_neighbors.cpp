@@ -58,7 +58,6 @@ void GrainNeighborList<Dim>::build(const Grid& grid, const std::vector<Index>& c
     slab_starts_.resize(static_cast<std::size_t>(grid.dims[0]) + 1);
     for (Index s = 0; s <= grid.dims[0]; ++s)
         slab_starts_[static_cast<std::size_t>(s)] = cell_start[static_cast<std::size_t>(s * cells_per_slab)];
-    periodic_x_ = grid.periodic[0];
     version_ = neighbors::next_list_version();
 }
 

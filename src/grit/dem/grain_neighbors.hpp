@@ -55,8 +55,6 @@ public:
     /// slab s holds grains [slab_starts()[s], slab_starts()[s + 1]). A grain's partners lie in its own
     /// slab or the next ones on either side (the cells are at least a list cutoff wide).
     const std::vector<Index>& slab_starts() const noexcept { return slab_starts_; }
-    /// Whether x is periodic (the last slab's neighbours then include the first's).
-    bool periodic_x() const noexcept { return periodic_x_; }
 
     /// True when a grain has moved more than skin/2 since the build, or the count has changed.
     bool stale(const Vec* x, Index n) const;
@@ -72,7 +70,6 @@ private:
     std::vector<Index> indices_;
     std::vector<Vec> reference_positions_;
     std::vector<Index> slab_starts_{0};
-    bool periodic_x_ = false;
     std::uint64_t version_ = 0;
     double skin_ = 0.0;
 };
