@@ -98,9 +98,47 @@ struct PairScratch {
     /// w_a R_a + w_b R_b whichever of its grains evaluates it (a contracted w_b * R_b + w_a R_a would not be).
     std::vector<Spin<Dim>> spin_radius;
 
+    /// Set where PairSumsClearing has run over the grains as they will be at the pair pass (DemSystem's
+    /// first half kick and drift run it in their pass); the pair pass then skips its own clearing pass,
+    /// and unsets it. reset() (fresh lists: the grains were reordered) unsets it too.
+    bool sums_cleared = false;
+
     /// For fresh lists of `entries` pairs: all 1 (unknown), so the first pass settles every pair.
-    void reset(std::size_t entries) { touching.assign(entries, 1); }
+    void reset(std::size_t entries) {
+        touching.assign(entries, 1);
+        sums_cleared = false;
+    }
 };
+
+/// What the pair pass starts from, for grain i: force and torque zero, no touching pair, w R rounded.
+/// `scratch` must be sized to the grains (prepare_pair_sums).
+template <int Dim>
+struct PairSumsClearing {
+    core::Vec<Dim>* force;
+    Spin<Dim>* torque;
+    std::int32_t* count;
+    Spin<Dim>* spin_radius;
+    const Spin<Dim>* w;
+    const double* radius;
+
+    PairSumsClearing(GrainSet<Dim>& grains, PairScratch<Dim>& scratch)
+        : force(grains.force()), torque(grains.torque()), count(scratch.touching_pairs.data()),
+          spin_radius(scratch.spin_radius.data()), w(std::as_const(grains).angular_velocity()),
+          radius(std::as_const(grains).radius()) {}
+    void operator()(Index i) const noexcept {
+        spin_radius[i] = w[i] * radius[i];
+        force[i] = core::Vec<Dim>::zero();
+        torque[i] = zero_spin<Dim>();
+        count[i] = 0;
+    }
+};
+
+/// Sizes the pair pass's per-grain scratch to the grains.
+template <int Dim>
+void prepare_pair_sums(const GrainSet<Dim>& grains, PairScratch<Dim>& scratch) {
+    scratch.spin_radius.resize(static_cast<std::size_t>(grains.size()));
+    scratch.touching_pairs.resize(static_cast<std::size_t>(grains.size()));
+}
 
 /// The pair pass of the grain-grain contacts: each pair of `pairs` (the grain lists cut into each pair
 /// once) is evaluated by its grain of lower index, body a, with the tangential history of its entry;
@@ -118,22 +156,14 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, c
     using Vec = core::Vec<Dim>;
     const Index grain_count = grains.size();
     if (scratch.touching.size() != pairs.upper_size()) scratch.reset(pairs.upper_size());
-    scratch.spin_radius.resize(static_cast<std::size_t>(grain_count));
-    scratch.touching_pairs.resize(static_cast<std::size_t>(grain_count));
+    if (!scratch.sums_cleared) {
+        prepare_pair_sums(grains, scratch);
+        const PairSumsClearing<Dim> clear(grains, scratch);
+        for_each_grain(grain_count, [&](Index i) { clear(i); });
+    }
+    scratch.sums_cleared = false;
     Vec* force = grains.force();
     Spin<Dim>* torque = grains.torque();
-    {
-        Spin<Dim>* wr = scratch.spin_radius.data();
-        std::int32_t* count = scratch.touching_pairs.data();
-        const Spin<Dim>* w = std::as_const(grains).angular_velocity();
-        const double* r = std::as_const(grains).radius();
-        for_each_grain(grain_count, [&](Index i) {
-            wr[i] = w[i] * r[i];
-            force[i] = Vec::zero();
-            torque[i] = zero_spin<Dim>();
-            count[i] = 0;
-        });
-    }
     // The arrays, copied into each grain's call: a local copy stays in registers, where pointers read
     // through the closure would be reloaded after every store (which may alias them).
     const struct {

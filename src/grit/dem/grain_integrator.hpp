@@ -46,17 +46,25 @@ void kick_grains(GrainSet<Dim>& grains, double half_dt) {
     for_each_grain(grains.size(), [&](Index i) { kick(i, half_dt); });
 }
 
+/// Does nothing to a grain: kick_drift_grains' default `after`.
+struct NoGrainWork {
+    void operator()(Index) const noexcept {}
+};
+
 /// The first half kick and the drift (x += dt v; orientation is not tracked: grains are round) of a
-/// step in one pass over the grains; returns the largest squared distance of a grain from reference[i]
-/// after the drift (0 when reference is null), for the neighbour lists' skin check.
-template <int Dim>
-double kick_drift_grains(GrainSet<Dim>& grains, double half_dt, double dt, const core::Vec<Dim>* reference) {
+/// step in one pass over the grains, then after(i) (more work on grain i while its lines are loaded);
+/// returns the largest squared distance of a grain from reference[i] after the drift (0 when reference is
+/// null), for the neighbour lists' skin check.
+template <int Dim, class After = NoGrainWork>
+double kick_drift_grains(GrainSet<Dim>& grains, double half_dt, double dt, const core::Vec<Dim>* reference,
+                         After&& after = {}) {
     const GrainKick<Dim> kick(grains);
     auto* x = grains.position();
     const auto* v = kick.v;
     return max_over_grains(grains.size(), 0.0, [&](Index i) {
         kick(i, half_dt);
         x[i] += v[i] * dt;
+        after(i);
         return reference ? core::norm2(x[i] - reference[i]) : 0.0;
     });
 }
