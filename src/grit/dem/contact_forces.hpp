@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -148,11 +149,13 @@ void prepare_pair_sums(const GrainSet<Dim>& grains, PairScratch<Dim>& scratch) {
 /// scratch.touching_pairs[i] for every grain. The pairs add straight into both grains, block by block of
 /// `blocks` (SlabBlocks: the blocks of one colour add to disjoint grains), a's own pairs summed first; so
 /// each grain's sum runs in an order the lists fix. A pair apart costs one distance test, and clears its
-/// history when it parts. finish_grain_forces() then completes every grain.
-template <int Dim, class Law>
+/// history when it parts. With `complete` (GrainCompletion), each grain is completed inside the pass as
+/// soon as no block adds to it any more (SlabBlocks::completed_after), while its block's lines are cached;
+/// without, the caller completes every grain after the pass (after the mesh walls' contacts, say).
+template <int Dim, class Law, class Complete = NoGrainWork>
 void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, const SlabBlocks& blocks,
                      const PairImages<Dim>& images, ContactHistory<Dim>& history, const PairMaterialTable& materials,
-                     const Law& law, double dt, PairScratch<Dim>& scratch) {
+                     const Law& law, double dt, PairScratch<Dim>& scratch, const Complete& complete = {}) {
     using Vec = core::Vec<Dim>;
     const Index grain_count = grains.size();
     if (scratch.touching.size() != pairs.upper_size()) scratch.reset(pairs.upper_size());
@@ -231,76 +234,101 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, c
     };
     blocks.for_each_block(grain_count, [&](Index j) {
         for (Index a = blocks.begin(j); a < blocks.end(j); ++a) visit(a);
+        // Each grain completed as soon as no block adds to it any more, while its block's lines are cached.
+        if constexpr (!std::is_same_v<Complete, NoGrainWork>) {
+            const auto [first, last] = blocks.completed_after(j);
+            if (first < last)
+                for (Index i = blocks.begin(first); i < blocks.end(last - 1); ++i) complete(i);
+        }
     });
 }
 
-/// Completes the force stage after grain_pair_pass(): adds to each grain its weight m g and the contacts
-/// of the plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall is body
-/// b of infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick
-/// F/m, w += half_kick T/I (the second half kick of a step no external stage adds forces to). With
+/// Completes grain i's force stage once grain_pair_pass() has summed its pairs: adds its weight m g and the contacts of the
+/// plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall is body b of
+/// infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick F/m,
+/// w += half_kick T/I (the second half kick of a step no external stage adds forces to). With
 /// `touching_pairs` (the pair pass's count per grain; null when grains pass through one another) it sets
-/// grain_contact[i] (touches another grain) and adds one to collisions[i] where that contact begins. Each
-/// grain writes only its own data.
+/// grain_contact[i] (touches another grain) and adds one to collisions[i] where that contact begins.
+/// Writes only grain i's data.
 template <int Dim, class Law>
-void finish_grain_forces(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
-                         const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
-                         const Law& law, double dt, double half_kick, const std::int32_t* touching_pairs) {
-    using Vec = core::Vec<Dim>;
-    const Vec* x = std::as_const(grains).position();
-    Vec* v = grains.velocity();
-    Spin<Dim>* w = grains.angular_velocity();
-    const double* radius = std::as_const(grains).radius();
-    const double* mass = std::as_const(grains).mass();
-    const double* inertia = std::as_const(grains).inertia();
-    const std::int32_t* material = std::as_const(grains).material();
-    Vec* force = grains.force();
-    Spin<Dim>* torque = grains.torque();
-    constexpr double infinite = std::numeric_limits<double>::infinity();
-    const bool kick = half_kick != 0.0;
-    const std::int32_t* fixed = fixed_flags(std::as_const(grains));
-    const auto& fields = std::as_const(grains).fields();
-    const std::int32_t* straddling =
-        fields.has(straddling_field) ? fields.template get<std::int32_t>(straddling_field).data() : nullptr;
-    std::int32_t* in_contact = grains.grain_contact();
-    std::int32_t* collisions = grains.collisions();
-    for_each_grain(grains.size(), [&](Index i) {
-        if (touching_pairs) {
+class GrainCompletion {
+public:
+    GrainCompletion(GrainSet<Dim>& grains, const core::Vec<Dim>& gravity, const std::vector<PlaneWall<Dim>>& walls,
+                    const std::vector<core::Vec<Dim>*>& wall_history, const PairMaterialTable& materials,
+                    const Law& law, double dt, double half_kick, const std::int32_t* touching_pairs)
+        : gravity_(gravity), walls_(walls), wall_history_(wall_history), materials_(materials), law_(law), dt_(dt),
+          half_kick_(half_kick), touching_pairs_(touching_pairs), x_(std::as_const(grains).position()),
+          v_(grains.velocity()), w_(grains.angular_velocity()), radius_(std::as_const(grains).radius()),
+          mass_(std::as_const(grains).mass()), inertia_(std::as_const(grains).inertia()),
+          material_(std::as_const(grains).material()), force_(grains.force()), torque_(grains.torque()),
+          fixed_(fixed_flags(std::as_const(grains))), in_contact_(grains.grain_contact()),
+          collisions_(grains.collisions()) {
+        const auto& fields = std::as_const(grains).fields();
+        straddling_ = fields.has(straddling_field) ? fields.template get<std::int32_t>(straddling_field).data() : nullptr;
+    }
+
+    void operator()(Index i) const noexcept {
+        using Vec = core::Vec<Dim>;
+        constexpr double infinite = std::numeric_limits<double>::infinity();
+        if (touching_pairs_) {
             // A contact that begins at this pass is a collision (a repeated pass over the same state, dt =
             // 0, finds the flag already set).
-            const std::int32_t now = touching_pairs[i] > 0;
-            collisions[i] += now & (in_contact[i] == 0);
-            in_contact[i] = now;
+            const std::int32_t now = touching_pairs_[i] > 0;
+            collisions_[i] += now & (in_contact_[i] == 0);
+            in_contact_[i] = now;
         }
-        Vec f = gravity * mass[i] + force[i];
-        Spin<Dim> t = torque[i] * radius[i];
-        for (std::size_t s = 0; s < walls.size(); ++s) {
-            const PlaneWall<Dim>& wall = walls[s];
-            Vec& h = wall_history[s][i];
-            const double gap = core::dot(x[i] - wall.point, wall.normal);
-            if (gap >= radius[i] || (wall.frictionless && straddling && straddling[i] > 0)) {
+        Vec f = gravity_ * mass_[i] + force_[i];
+        Spin<Dim> t = torque_[i] * radius_[i];
+        for (std::size_t s = 0; s < walls_.size(); ++s) {
+            const PlaneWall<Dim>& wall = walls_[s];
+            Vec& h = wall_history_[s][i];
+            const double gap = core::dot(x_[i] - wall.point, wall.normal);
+            if (gap >= radius_[i] || (wall.frictionless && straddling_ && straddling_[i] > 0)) {
                 // Most grains are off most walls: clearing only a history that is set keeps their lines clean.
                 if (core::norm2(h) != 0.0) h = Vec::zero();
                 continue;
             }
             const Vec n = -wall.normal;  // from the grain (a) to the wall (b)
-            const Vec vab = v[i] + spin_cross<Dim>(w[i] * radius[i], n);
-            const double sphere = contact_mass<Dim>(mass[i], radius[i]);
-            const ContactKinematics c{radius[i] - gap, 0.0, radius[i], infinite, sphere, infinite};
-            PairMaterial pair = materials.at(material[i], wall.material);
+            const Vec vab = v_[i] + spin_cross<Dim>(w_[i] * radius_[i], n);
+            const double sphere = contact_mass<Dim>(mass_[i], radius_[i]);
+            const ContactKinematics c{radius_[i] - gap, 0.0, radius_[i], infinite, sphere, infinite};
+            PairMaterial pair = materials_.at(material_[i], wall.material);
             if (wall.frictionless) pair.friction = 0.0;
             const ContactResponse<Dim> res = contact_response<Dim>(
-                law, pair, n, vab, c, h, dt, disc_force_scale<Dim>(mass[i], sphere, infinite, infinite));
+                law_, pair, n, vab, c, h, dt_, disc_force_scale<Dim>(mass_[i], sphere, infinite, infinite));
             h = res.history;
             f += res.force;
-            t += res.lever_moment * radius[i];
+            t += res.lever_moment * radius_[i];
         }
-        force[i] = f;
-        torque[i] = t;
-        if (kick && !(fixed && fixed[i])) {
-            v[i] += f * (half_kick / mass[i]);
-            w[i] += t * (half_kick / inertia[i]);
+        force_[i] = f;
+        torque_[i] = t;
+        if (half_kick_ != 0.0 && !(fixed_ && fixed_[i])) {
+            v_[i] += f * (half_kick_ / mass_[i]);
+            w_[i] += t * (half_kick_ / inertia_[i]);
         }
-    });
-}
+    }
+
+private:
+    core::Vec<Dim> gravity_;
+    const std::vector<PlaneWall<Dim>>& walls_;
+    const std::vector<core::Vec<Dim>*>& wall_history_;
+    const PairMaterialTable& materials_;
+    const Law& law_;
+    double dt_, half_kick_;
+    const std::int32_t* touching_pairs_;
+    const core::Vec<Dim>* x_;
+    core::Vec<Dim>* v_;
+    Spin<Dim>* w_;
+    const double* radius_;
+    const double* mass_;
+    const double* inertia_;
+    const std::int32_t* material_;
+    core::Vec<Dim>* force_;
+    Spin<Dim>* torque_;
+    const std::int32_t* fixed_;
+    const std::int32_t* straddling_ = nullptr;
+    std::int32_t* in_contact_;
+    std::int32_t* collisions_;
+};
 
 }  // namespace grit::dem

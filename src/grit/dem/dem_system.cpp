@@ -163,7 +163,17 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            if (parameters_.grain_pairs) {
+            if (parameters_.grain_pairs) prepare_pair_sums(grains_, scratch_);  // before the completion reads its data()
+            const GrainCompletion<Dim, std::decay_t<decltype(law)>> complete(
+                grains_, parameters_.gravity, walls_, wall_history, pair_table_, law, dt, half_kick,
+                parameters_.grain_pairs ? scratch_.touching_pairs.data() : nullptr);
+            // Without mesh walls (whose contacts come between the pairs and the completion) each grain is
+            // completed inside the pair pass, as soon as its sums are whole.
+            const bool complete_in_pairs = parameters_.grain_pairs && !meshes_;
+            if (complete_in_pairs) {
+                grain_pair_pass<Dim>(grains_, pairs_, blocks_, images_, history_, pair_table_, law, dt, scratch_,
+                                     complete);
+            } else if (parameters_.grain_pairs) {
                 grain_pair_pass<Dim>(grains_, pairs_, blocks_, images_, history_, pair_table_, law, dt, scratch_);
             } else {  // grains pass through one another: no pair forces, no contacts
                 Vec* f = grains_.force();
@@ -183,9 +193,7 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
             } else {
                 (void)time;
             }
-            finish_grain_forces<Dim>(grains_, parameters_.gravity, walls_, wall_history, pair_table_, law, dt,
-                                     half_kick,
-                                     parameters_.grain_pairs ? scratch_.touching_pairs.data() : nullptr);
+            if (!complete_in_pairs) for_each_grain(grains_.size(), [&](Index i) { complete(i); });
         },
         law_);
     forces_ready_ = true;
@@ -215,8 +223,9 @@ void DemSystem<Dim>::end_step(double dt) {
 
 template <int Dim>
 void DemSystem<Dim>::step(double dt) {
-    // begin_step then end_step, with the second half kick in the force stage's last pass: three passes
-    // over the grains a step (kick and drift, pairs, completion and kick).
+    // begin_step then end_step, with the second half kick in the force stage's completion: two passes over
+    // the grains a step (kick, drift and the sums' clearing; the pairs, each grain completed and kicked
+    // inside it), three with mesh walls (their contacts come before the completion).
     if (!forces_ready_) compute_forces(0.0);
     kick_drift(dt);
     force_stage(dt, 0.5 * dt, time_ + dt);

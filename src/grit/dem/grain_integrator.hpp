@@ -46,11 +46,6 @@ void kick_grains(GrainSet<Dim>& grains, double half_dt) {
     for_each_grain(grains.size(), [&](Index i) { kick(i, half_dt); });
 }
 
-/// Does nothing to a grain: kick_drift_grains' default `after`.
-struct NoGrainWork {
-    void operator()(Index) const noexcept {}
-};
-
 /// The first half kick and the drift (x += dt v; orientation is not tracked: grains are round) of a
 /// step in one pass over the grains, then after(i) (more work on grain i while its lines are loaded);
 /// returns the largest squared distance of a grain from reference[i] after the drift (0 when reference is

@@ -11,6 +11,11 @@
 
 namespace grit::dem {
 
+/// Does nothing to a grain: the default of the stages that take more work per grain.
+struct NoGrainWork {
+    void operator()(Index) const noexcept {}
+};
+
 /// Calls f(i) for i in [0, n); f writes only to grain i.
 template <class F>
 void for_each_grain(Index n, F&& f) {

@@ -80,7 +80,7 @@ class MeshWalls {
     Vec3 surface_velocity(std::size_t w, const Vec3& x) const;
 
     /// The contacts of the grains with the meshes at their current positions: adds each contact's force
-    /// to force[i] and its n x F_t to torque[i] (the grain pair pass's convention: finish_grain_forces
+    /// to force[i] and its n x F_t to torque[i] (the grain pair pass's convention: GrainCompletion
     /// multiplies torques by the radius), carries the tangential histories (into a triangle beside the
     /// last one, for a grain sliding over a mesh) and records the contacts (contacts_of). dt = 0 leaves
     /// the histories as they are. Gather form: each grain writes its own data only.

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "grit/core/types.hpp"
@@ -40,6 +41,20 @@ public:
     Index count() const noexcept { return static_cast<Index>(begin_.size()) - 1; }
     Index begin(Index j) const noexcept { return begin_[static_cast<std::size_t>(j)]; }
     Index end(Index j) const noexcept { return begin_[static_cast<std::size_t>(j) + 1]; }
+
+    /// The blocks whose grains no block after j (in for_each_block's order) adds to, and that no block before
+    /// j has completed: [first, last). Block 0's grains receive from block 0 alone (it evaluates the pairs
+    /// across a periodic x boundary); block j > 0's from blocks j - 1 and j (and the last block's from block
+    /// 0), so block j completes itself when its colour is the later of the two (j % 3 = 1, 2) and block
+    /// j + 1 when j % 3 = 2 (block j + 1 of colour 0 ran before it).
+    std::pair<Index, Index> completed_after(Index j) const noexcept {
+        const Index blocks = count();
+        if (blocks < colours) return {0, blocks};  // one block
+        if (j == 0) return {0, 1};
+        if (j % colours == 1) return {j, j + 1};
+        if (j % colours == 2) return {j, std::min(j + 2, blocks)};
+        return {j, j};
+    }
 
     /// Calls run(j) for every block: the colours one after the other, the blocks of a colour in parallel
     /// (in block order on one thread, or when the grains are few).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "grit/dem/grain_neighbors.hpp"
+#include "grit/dem/slab_blocks.hpp"
 
 using namespace grit::dem;
 using grit::Index;
@@ -92,4 +93,37 @@ TEST(GrainNeighbors, WrapAndNearestImage) {
     const auto m = d.nearest_image({{1.5, 3.0}});
     EXPECT_DOUBLE_EQ(m[0], -0.5);
     EXPECT_DOUBLE_EQ(m[1], 3.0);
+}
+
+// The pair pass completes each grain inside its blocks' loop (SlabBlocks::completed_after): every block
+// exactly once, and only after every block that adds to its grains (blocks j - 1 and j, and block 0 for
+// the last block across a periodic x boundary) has run, in for_each_block's serial order (the colours one
+// after the other; a colour's blocks run in parallel, and none of them adds to another's completed blocks).
+TEST(SlabBlocks, EveryBlockCompletedOnceAfterAllThatAddToIt) {
+    for (const Index slabs : {Index{1}, Index{2}, Index{3}, Index{7}, Index{9}, Index{13}}) {
+        std::vector<Index> starts;
+        for (Index s = 0; s <= slabs; ++s) starts.push_back(10 * s);  // ten grains a slab
+        SlabBlocks blocks;
+        blocks.assign(starts);
+        const Index count = blocks.count();
+        std::vector<int> ran(static_cast<std::size_t>(count), 0), completed(static_cast<std::size_t>(count), 0);
+        auto writers_done = [&](Index k) {
+            bool done = ran[static_cast<std::size_t>(k)] != 0;
+            if (k > 0) done = done && ran[static_cast<std::size_t>(k - 1)] != 0;
+            if (k == count - 1) done = done && ran[0] != 0;
+            return done;
+        };
+        Index grains = 0;
+        blocks.for_each_block(0, [&](Index j) {  // 0 grains: the serial order
+            ran[static_cast<std::size_t>(j)] = 1;
+            const auto [first, last] = blocks.completed_after(j);
+            for (Index k = first; k < last; ++k) {
+                EXPECT_TRUE(writers_done(k)) << slabs << " slabs: block " << k << " completed after block " << j;
+                ++completed[static_cast<std::size_t>(k)];
+                grains += blocks.end(k) - blocks.begin(k);
+            }
+        });
+        for (Index k = 0; k < count; ++k) EXPECT_EQ(completed[static_cast<std::size_t>(k)], 1) << slabs << " slabs: block " << k;
+        EXPECT_EQ(grains, 10 * slabs);
+    }
 }
