@@ -243,9 +243,9 @@ void grain_pair_pass(GrainSet<Dim>& grains, const neighbors::HalfLists& pairs, c
     });
 }
 
-/// Completes grain i's force stage once grain_pair_pass() has summed its pairs: adds its weight m g and the contacts of the
-/// plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall is body b of
-/// infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick F/m,
+/// Completes grain i's force stage once grain_pair_pass() has summed its pairs: adds its weight m g and the
+/// contacts of the plane walls (wall_history[w][i] is grain i's tangential history against wall w; a wall
+/// is body b of infinite radius and mass, at rest). With half_kick != 0 it then kicks the grain, v += half_kick F/m,
 /// w += half_kick T/I (the second half kick of a step no external stage adds forces to). With
 /// `touching_pairs` (the pair pass's count per grain; null when grains pass through one another) it sets
 /// grain_contact[i] (touches another grain) and adds one to collisions[i] where that contact begins.
@@ -264,7 +264,7 @@ public:
           fixed_(fixed_flags(std::as_const(grains))), in_contact_(grains.grain_contact()),
           collisions_(grains.collisions()) {
         const auto& fields = std::as_const(grains).fields();
-        straddling_ = fields.has(straddling_field) ? fields.template get<std::int32_t>(straddling_field).data() : nullptr;
+        if (fields.has(straddling_field)) straddling_ = fields.template get<std::int32_t>(straddling_field).data();
     }
 
     void operator()(Index i) const noexcept {

@@ -163,7 +163,8 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
         wall_history.push_back(grains_.fields().template get<Vec>("wall_history_" + std::to_string(s)).data());
     std::visit(
         [&](const auto& law) {
-            if (parameters_.grain_pairs) prepare_pair_sums(grains_, scratch_);  // before the completion reads its data()
+            // Sized before the completion takes the counts' data().
+            if (parameters_.grain_pairs) prepare_pair_sums(grains_, scratch_);
             const GrainCompletion<Dim, std::decay_t<decltype(law)>> complete(
                 grains_, parameters_.gravity, walls_, wall_history, pair_table_, law, dt, half_kick,
                 parameters_.grain_pairs ? scratch_.touching_pairs.data() : nullptr);

@@ -123,7 +123,8 @@ TEST(SlabBlocks, EveryBlockCompletedOnceAfterAllThatAddToIt) {
                 grains += blocks.end(k) - blocks.begin(k);
             }
         });
-        for (Index k = 0; k < count; ++k) EXPECT_EQ(completed[static_cast<std::size_t>(k)], 1) << slabs << " slabs: block " << k;
+        for (Index k = 0; k < count; ++k)
+            EXPECT_EQ(completed[static_cast<std::size_t>(k)], 1) << slabs << " slabs: block " << k;
         EXPECT_EQ(grains, 10 * slabs);
     }
 }
