@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -126,5 +127,67 @@ TEST(SlabBlocks, EveryBlockCompletedOnceAfterAllThatAddToIt) {
         for (Index k = 0; k < count; ++k)
             EXPECT_EQ(completed[static_cast<std::size_t>(k)], 1) << slabs << " slabs: block " << k;
         EXPECT_EQ(grains, 10 * slabs);
+    }
+}
+
+// Without barriers between the colours (SlabBlocks::for_each_block in parallel) a block waits only for its
+// earlier_neighbours(). Checked for every block count: the serial order is every block once, colour by
+// colour; two blocks that add to the same grains never run at once (the later waits for the earlier); and
+// a block completed at the end of block j is read and written by no block that may still be running then
+// (each of its readers and writers is j or runs before j: a chain of waits).
+TEST(SlabBlocks, BlocksThatShareGrainsWaitForOneAnother) {
+    for (const Index slabs : {Index{3}, Index{4}, Index{6}, Index{9}, Index{13}, Index{41}}) {
+        std::vector<Index> starts;
+        for (Index s = 0; s <= slabs; ++s) starts.push_back(10 * s);
+        SlabBlocks blocks;
+        blocks.assign(starts);
+        const Index count = blocks.count();
+        std::vector<Index> place(static_cast<std::size_t>(count), -1);
+        for (Index q = 0; q < count; ++q) {
+            const Index j = blocks.in_serial_order(q);
+            ASSERT_TRUE(j >= 0 && j < count) << slabs << " slabs, place " << q;
+            EXPECT_EQ(place[static_cast<std::size_t>(j)], -1) << slabs << " slabs: block " << j << " twice";
+            place[static_cast<std::size_t>(j)] = q;
+            if (q > 0) {
+                EXPECT_LE(blocks.in_serial_order(q - 1) % SlabBlocks::colours, j % SlabBlocks::colours);
+            }
+        }
+        // The grains' blocks that block j adds to (its own, the next, and the last for block 0), and the
+        // blocks whose grains it reads (the same: a pair reads both grains).
+        auto touches = [&](Index j) {
+            std::vector<Index> t{j};
+            if (j + 1 < count) t.push_back(j + 1);
+            if (j == 0 && count > 1) t.push_back(count - 1);
+            return t;
+        };
+        // m runs before j (or is j): j waits for m, or for a block that runs after m.
+        std::function<bool(Index, Index)> before = [&](Index m, Index j) {
+            if (m == j) return true;
+            for (const Index k : blocks.earlier_neighbours(j))
+                if (k >= 0 && before(m, k)) return true;
+            return false;
+        };
+        for (Index j = 0; j < count; ++j)
+            for (Index m = 0; m < count; ++m) {
+                if (m == j || place[static_cast<std::size_t>(m)] > place[static_cast<std::size_t>(j)]) continue;
+                const auto tj = touches(j), tm = touches(m);
+                const bool shared = std::any_of(tj.begin(), tj.end(), [&](Index b) {
+                    return std::find(tm.begin(), tm.end(), b) != tm.end();
+                });
+                if (shared) {
+                    EXPECT_TRUE(before(m, j)) << slabs << " slabs: block " << j << " may run beside " << m;
+                }
+            }
+        for (Index j = 0; j < count; ++j) {
+            const auto [first, last] = blocks.completed_after(j);
+            for (Index k = first; k < last; ++k)
+                for (Index m = 0; m < count; ++m) {
+                    const auto tm = touches(m);
+                    if (std::find(tm.begin(), tm.end(), k) != tm.end()) {
+                        EXPECT_TRUE(before(m, j)) << slabs << " slabs: block " << k << ", completed after block " << j
+                                                  << ", is still touched by block " << m;
+                    }
+                }
+        }
     }
 }
