@@ -1,6 +1,7 @@
 // Blocks of whole cell slabs for the grain pair pass, coloured so that the blocks of one colour add to
 // disjoint grains: the pair pass then adds each pair's force straight into both grains' sums, in
-// parallel, without per-block scratch rows, in an order the lists fix.
+// parallel, without atomic adds (atomic flags only order the blocks) and without per-block scratch rows,
+// in an order the lists fix.
 //
 // Grains are numbered by cell with x slowest (GrainNeighborList), so a slab of cells along x is a run of
 // consecutive grains, and a grain's partners of higher index lie in its own slab or the next one, or,
@@ -87,7 +88,7 @@ public:
         auto wait_for = [&](Index k) {
             const std::atomic<std::uint8_t>& flag = done[static_cast<std::size_t>(k)];
             for (int spin = 0; flag.load(std::memory_order_acquire) == 0; ++spin) {
-                if (spin < 1024) pause();
+                if (spin < 1024) spin_pause();
                 else std::this_thread::yield();
             }
         };
@@ -128,7 +129,7 @@ public:
     }
 
 private:
-    static void pause() noexcept {
+    static void spin_pause() noexcept {
 #if defined(__x86_64__) || defined(__i386__)
         __builtin_ia32_pause();
 #endif
