@@ -18,6 +18,7 @@
 #include "grit/core/error.hpp"
 #include "grit/dem/grain_material.hpp"
 #include "grit/io/case_reader.hpp"
+#include "grit/io/run_folder.hpp"
 #include "grit/material/library.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/simulation.hpp"
@@ -35,7 +36,7 @@ constexpr int exit_blow_up = 3;
 
 int run_command(const std::string& case_file, const std::vector<std::string>& sets, const std::string& out,
                 double end_time, bool has_end_time, int threads, bool quiet, const std::string& restart,
-                long dump_from, bool fixed_threads) {
+                long dump_from, bool fixed_threads, bool overwrite, double max_wall_time, double progress_every) {
     // A restart applies the checkpointed run's --set first (a sweep's parameter, a changed grain size), so
     // that it continues the same physics; its own --set come after and win.
     std::vector<std::string> overrides;
@@ -46,6 +47,8 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
             fmt::print(stderr, "restart: the checkpointed run's --set apply first: {}\n", fmt::join(overrides, " "));
     }
     overrides.insert(overrides.end(), sets.begin(), sets.end());
+    // Every --set is validated as given, also where --end-time then replaces it.
+    if (has_end_time) (void)grit::io::read_case(case_file, overrides);
     if (has_end_time) overrides.push_back(fmt::format("time.end={:.17g}", end_time));
     const grit::io::CaseSpec spec = grit::io::read_case(case_file, overrides);
     if (threads > 0) grit::parallel::set_threads(threads);
@@ -54,7 +57,20 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
     options.quiet = quiet;
     options.dump_from_step = dump_from;
     options.adapt_threads = !fixed_threads;
-    if (!restart.empty()) {
+    options.max_wall_time_s = max_wall_time;
+    options.progress_every_s = progress_every;
+    if (restart.empty()) {
+        // A fresh run never replaces an earlier one without being told to.
+        const std::string earlier = grit::io::earlier_run(options.output_dir);
+        if (!earlier.empty() && !overwrite)
+            throw grit::core::InputError(fmt::format(
+                "--out {}: the folder holds {}; continue it with --restart {} (and --set time.end=... to extend "
+                "it), or replace it with --overwrite",
+                options.output_dir.string(), earlier, options.output_dir.string()));
+        grit::io::check_writable_folder(options.output_dir, "--out");
+    } else {
+        if (overwrite)
+            throw grit::core::InputError("--overwrite: a restart continues its run's files; leave --overwrite out");
         // A restart continues the files of the run the checkpoint belongs to (its folder holds checkpoints/).
         options.restart = restart;
         const auto checkpoint = grit::sim::resolve_checkpoint(restart);
@@ -66,6 +82,10 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
         options.output_dir = folder;
     }
     const auto summary = grit::sim::run_case(spec, options);
+    if (!summary.message.empty()) {
+        fmt::print(stderr, "grit: {}\n", summary.message);
+        return 0;
+    }
     if (!quiet)
         fmt::print("{}: {} steps to t = {:.6g} s, {} particles, {:.3g} s wall, {:.3g} particle-steps/s -> {}\n",
                    spec.name, summary.steps, summary.end_time, summary.particles, summary.wall_time_s,
@@ -135,6 +155,29 @@ int parse_threads(const std::string& text) {
     return n;
 }
 
+/// --max-wall-time: seconds ("3600", "5400.5") or H:MM:SS / MM:SS ("1:30:00"), more than zero.
+double parse_wall_time(const std::string& text) {
+    double seconds = 0.0;
+    std::size_t start = 0;
+    int fields = 0;
+    bool ok = !text.empty();
+    while (ok && start <= text.size()) {
+        const auto colon = text.find(':', start);
+        const std::string part = text.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+        double v = 0.0;
+        const auto [stop, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+        ok = !part.empty() && ec == std::errc{} && stop == part.data() + part.size() && v >= 0.0 && std::isfinite(v);
+        seconds = seconds * 60.0 + v;
+        ++fields;
+        if (colon == std::string::npos) break;
+        start = colon + 1;
+    }
+    if (!ok || fields > 3 || !(seconds > 0.0))
+        throw grit::core::InputError(fmt::format(
+            "--max-wall-time {}: must be a wall time above zero, in seconds or as H:MM:SS", text));
+    return seconds;
+}
+
 /// One line for a command-line error CLI11 reports (its own message, less the "Run with --help" line).
 std::string usage_error(const CLI::App& app, const CLI::ParseError& e) {
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty()) {
@@ -172,6 +215,9 @@ int main(int argc, char** argv) {
     std::string restart;
     long dump_from = 0;
     bool fixed_threads = false;
+    bool overwrite = false;
+    std::string max_wall_text;
+    double progress_every = 30.0;
 
     auto* run = app.add_subcommand("run", "run a case");
     run->add_option("case", case_file, "case file (TOML)")->required();
@@ -183,9 +229,21 @@ int main(int argc, char** argv) {
                   "keep the thread count even while another process holds a core (by default the run uses fewer "
                   "threads then, and takes them back when the core is free)");
     run->add_flag("--quiet", quiet, "no progress line or final message");
+    run->add_flag("--overwrite", overwrite,
+                  "replace the earlier run in the output folder (its snapshots, series, checkpoints and plots); "
+                  "without it a fresh run into a folder that holds one is refused");
     run->add_option("--restart", restart,
                     "continue from a checkpoint: a run folder (its latest checkpoints/*.h5) or a checkpoint file; "
                     "the run's own --set apply again, before these");
+    auto* max_wall_opt = run->add_option("--max-wall-time", max_wall_text,
+                                         "write a checkpoint and stop after this much wall time (seconds, or "
+                                         "H:MM:SS as batch systems write it); continue with --restart")
+                             ->type_name("TIME");
+    run->add_option("--progress-every", progress_every,
+                    "a plain progress line (step, t, rate, ETA) every this many seconds of wall time in run.log, "
+                    "and on standard error when it is not a terminal (make, tee, a batch job); 0: none")
+        ->check(CLI::NonNegativeNumber)
+        ->type_name("SECONDS");
     auto* dump_opt = run->add_option("--dump-from", dump_from,
                                      "write the SPH particles after every step from this step on "
                                      "(dump/<case>_step_<N>.vtu): to see how a blow-up starts, restart from a "
@@ -234,8 +292,9 @@ int main(int argc, char** argv) {
             if (dump_opt->count() && dump_from < 1)
                 throw grit::core::InputError(fmt::format("--dump-from {}: must be a step number, 1 or more", dump_from));
             const int threads = threads_opt->count() ? parse_threads(threads_text) : 0;
+            const double max_wall = max_wall_opt->count() ? parse_wall_time(max_wall_text) : 0.0;
             return run_command(case_file, sets, out, end_time, end_opt->count() > 0, threads, quiet, restart,
-                               dump_from, fixed_threads);
+                               dump_from, fixed_threads, overwrite, max_wall, progress_every);
         }
         if (sweep->parsed()) {
             grit::app::SweepOptions o;
@@ -301,7 +360,8 @@ int main(int argc, char** argv) {
         return exit_input_error;
     } catch (const grit::sim::Interrupted& e) {
         fmt::print(stderr, "grit: {}\n", e.what());
-        return 128 + e.signal();  // 130 for Ctrl-C (SIGINT), 143 for SIGTERM
+        // 130 for Ctrl-C (SIGINT), 143 for SIGTERM, 138 for SIGUSR1; 0 at --max-wall-time, a planned stop.
+        return e.signal() == 0 ? 0 : 128 + e.signal();
     } catch (const grit::core::BlowUpError& e) {
         fmt::print(stderr, "grit: {}\n", e.what());
         return exit_blow_up;

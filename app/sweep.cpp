@@ -18,6 +18,7 @@
 
 #include "grit/core/error.hpp"
 #include "grit/io/case_reader.hpp"
+#include "grit/io/run_folder.hpp"
 
 extern char** environ;
 
@@ -81,13 +82,19 @@ nlohmann::json finished_summary(const fs::path& dir) {
     return nullptr;
 }
 
-/// Starts `grit run` for one point; returns its process id.
+/// The --set of one point's run, in the order the run applies them: the sweep's, then the point's.
+std::vector<std::string> run_overrides(const SweepOptions& o, const std::vector<std::string>& point) {
+    std::vector<std::string> sets = o.sets;
+    for (std::size_t k = 0; k < point.size(); ++k) sets.push_back(o.parameters[k].key + "=" + point[k]);
+    return sets;
+}
+
+/// Starts `grit run` for one point (replacing what an unfinished or outdated run left in its folder);
+/// returns its process id.
 pid_t start_run(const SweepOptions& o, const std::vector<std::string>& point, const fs::path& dir, int threads) {
     std::vector<std::string> args = {o.grit.string(), "run", o.case_file.string(), "--out", dir.string(), "--quiet",
-                                     "--threads", std::to_string(threads)};
-    for (const auto& s : o.sets) args.insert(args.end(), {"--set", s});
-    for (std::size_t k = 0; k < point.size(); ++k)
-        args.insert(args.end(), {"--set", o.parameters[k].key + "=" + point[k]});
+                                     "--overwrite", "--threads", std::to_string(threads)};
+    for (const auto& s : run_overrides(o, point)) args.insert(args.end(), {"--set", s});
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -129,12 +136,29 @@ int run_sweep(const SweepOptions& o) {
     const int jobs = std::max(1, std::min(o.jobs, static_cast<int>(points.size())));
     const int per_run = std::max(1, cores / jobs);
 
+    // A run done before is kept only if it ran this case text with these --set; otherwise it runs again.
+    const std::string digest = io::case_digest(o.case_file);
     std::vector<std::size_t> pending;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        if (finished_summary(o.out / sweep_run_name(o.parameters, points[i])).is_null())
+        const auto name = sweep_run_name(o.parameters, points[i]);
+        const auto done = finished_summary(o.out / name);
+        if (done.is_null()) {
             pending.push_back(i);
-        else if (!o.quiet)
-            fmt::print("{}: done before, kept\n", sweep_run_name(o.parameters, points[i]));
+            continue;
+        }
+        const auto overrides = run_overrides(o, points[i]);
+        const bool same_case = done.value("case_digest", std::string()) == digest;
+        const bool same_sets = done.contains("overrides") && done["overrides"] == nlohmann::json(overrides);
+        if (same_case && same_sets) {
+            if (!o.quiet) fmt::print("{}: done before, kept\n", name);
+            continue;
+        }
+        pending.push_back(i);
+        if (!o.quiet)
+            fmt::print("{}: done before with {}, runs again\n", name,
+                       !same_case ? "another case text" : fmt::format("other --set ({})", done.contains("overrides")
+                                                                                ? done["overrides"].dump()
+                                                                                : std::string("not recorded")));
     }
     std::map<pid_t, std::size_t> running;
     std::size_t next = 0;

@@ -210,6 +210,8 @@ expect_input_error "spacing larger than the geometry" "fluid[0].max" "less than 
     run "$HYDRO" --set numerics.particle_spacing=1.0
 expect_input_error "negative --end-time" "--end-time" "must not be negative" -- run "$HYDRO" --end-time -1
 expect_input_error "--set without '='" "--set 'time.end'" "key.path=value" -- run "$HYDRO" --set time.end
+expect_input_error "a bad --set that --end-time replaces" "time.end" "must not be negative" -- \
+    run "$HYDRO" --set time.end=-1 --end-time 0
 
 # STL mesh walls: a file that cannot be trusted is refused with its name and the problem.
 WEAR=$ROOT/cases/wear_angle_sweep_3d/case.toml
@@ -312,13 +314,23 @@ else
     fail "t0: run.log names the version, the estimate and the end" "$(cat "$T0/run.log" 2>&1)"
 fi
 
+# Progress in every log: with standard error not a terminal (make, tee, a batch job), a plain line every
+# --progress-every seconds, in run.log too.
+grit run "$ROOT/cases/demo.toml" --set time.end=4e-6 --set output.snapshots=false --out "$W/progress" --progress-every 0.2
+if [[ $RC -eq 0 ]] && grep -Eq '^progress: +[0-9.]+% t = .* s, step [0-9]+, .* steps/s, elapsed .*, (ETA|done)' "$W/stderr" &&
+    grep -q '\[info\] progress: ' "$W/progress/run.log" && ! grep -q $'\r' "$W/stderr"; then
+    pass "progress lines when standard error is not a terminal, and in run.log: $(grep -m1 '^progress' "$W/stderr")"
+else
+    fail "progress lines when standard error is not a terminal, and in run.log" "exit $RC: $(head -c 600 "$W/stderr")"
+fi
+
 # How many threads a run uses (parallel/thread_governor.hpp): fewer while another process holds a core,
 # unless --fixed-threads; run.log says so, summary.json counts the changes.
 T0W=$W/t0_threads
 "$GRIT" run "$HYDRO" --end-time 1e-3 --threads 2 --out "$T0W" --quiet >/dev/null 2>&1
 adapting=$(grep -c 'threads: 2, fewer while another process holds a core' "$T0W/run.log" 2>/dev/null || true)
 changes=$(grep -c '"thread_changes":' "$T0W/summary.json" 2>/dev/null || true)
-"$GRIT" run "$HYDRO" --end-time 1e-3 --threads 2 --fixed-threads --out "$T0W" --quiet >/dev/null 2>&1
+"$GRIT" run "$HYDRO" --end-time 1e-3 --threads 2 --fixed-threads --out "$T0W" --overwrite --quiet >/dev/null 2>&1
 fixed=$(grep -c 'fewer while another process' "$T0W/run.log" 2>/dev/null || true)
 fixed_changes=$(grep -c '"thread_changes":' "$T0W/summary.json" 2>/dev/null || true)
 if [[ $adapting == 1 && $changes == 1 && $fixed == 0 && $fixed_changes == 0 ]]; then
@@ -673,6 +685,86 @@ else
     fail "SIGKILL mid-run (carried --set): a checkpoint appeared" "none within 30 s"
 fi
 
+# SIGUSR1 (what a batch system sends ahead of its time limit): a checkpoint, exit 138, and the restart
+# continues bit for bit.
+USR1=$W/usr1
+if start_and_wait_for_checkpoint "$USR1"; then
+    kill -USR1 "$BG_PID" 2>/dev/null || true
+    bg_rc=0
+    wait "$BG_PID" || bg_rc=$?
+    if [[ $bg_rc -eq 138 ]] && grep -q 'interrupted by signal 10' "$W/bg_err"; then
+        pass "SIGUSR1: a checkpoint and exit 138"
+    elif [[ $bg_rc -eq 0 ]]; then
+        skip "SIGUSR1: exit 138" "the run finished before the signal arrived"
+    else
+        fail "SIGUSR1: a checkpoint and exit 138" "exit $bg_rc; $(cat "$W/bg_err")"
+    fi
+    grit run "$DEMO" --restart "$USR1" "${DEMO_SET[@]}"
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$USR1"); then
+        pass "SIGUSR1, --restart DIR: outputs identical to the straight run"
+    else
+        fail "SIGUSR1, --restart DIR: outputs identical to the straight run" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+else
+    fail "SIGUSR1 mid-run: a checkpoint appeared" "none within 30 s"
+fi
+
+# --max-wall-time: a checkpoint and a planned stop (exit 0, status 'interrupted'); the restart finishes
+# the run bit for bit.
+WALL=$W/wall
+grit run "$DEMO" --out "$WALL" "${DEMO_SET[@]}" --set output.checkpoint_interval=0 --max-wall-time 0:01
+wall_status=$("${JSON_PY:-python3}" -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$WALL/summary.json" 2>/dev/null || true)
+if [[ $RC -eq 0 && $wall_status == completed ]]; then
+    skip "--max-wall-time 0:01 stops the run" "the run finished within a second"
+elif [[ $RC -eq 0 && $wall_status == interrupted ]] && grep -q 'wall-time limit' "$W/stderr" &&
+    compgen -G "$WALL/checkpoints/checkpoint_*.h5" >/dev/null; then
+    pass "--max-wall-time 0:01: a checkpoint, exit 0, status 'interrupted'"
+    grit run "$DEMO" --restart "$WALL" "${DEMO_SET[@]}" --set output.checkpoint_interval=0
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$WALL"); then
+        pass "--max-wall-time, --restart DIR: outputs identical to the straight run"
+    else
+        fail "--max-wall-time, --restart DIR: outputs identical to the straight run" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+else
+    fail "--max-wall-time 0:01: a checkpoint, exit 0, status 'interrupted'" "exit $RC, status '$wall_status': $(cat "$W/stderr")"
+fi
+grit run "$DEMO" --out "$W/wall_bad" --max-wall-time 1:xx
+if [[ $RC -eq 2 ]] && grep -q -- '--max-wall-time 1:xx: ' "$W/stderr"; then
+    pass "--max-wall-time 1:xx refused: $(cat "$W/stderr")"
+else
+    fail "--max-wall-time 1:xx refused" "exit $RC: $(cat "$W/stderr")"
+fi
+
+# A case with no timed checkpoints still has one on wall time (output.checkpoint_wall_interval, 30 min by
+# default; 0.3 s here): killed without warning, it loses at most that, and continues bit for bit.
+WALLCK=$W/wall_checkpoint
+if start_and_wait_for_checkpoint "$WALLCK" --set output.checkpoint_interval=0 --set output.checkpoint_wall_interval=0.3; then
+    kill -KILL "$BG_PID" 2>/dev/null || true
+    wait "$BG_PID" 2>/dev/null || true
+    grit run "$DEMO" --restart "$WALLCK" "${DEMO_SET[@]}" --set output.checkpoint_interval=0
+    if [[ $RC -eq 0 ]] && why=$(same_outputs "$STRAIGHT" "$WALLCK") && ! compgen -G "$WALLCK/checkpoints/.*.tmp" >/dev/null; then
+        pass "wall-time checkpoint, SIGKILL, --restart DIR: outputs identical to the straight run"
+    else
+        fail "wall-time checkpoint, SIGKILL, --restart DIR: outputs identical to the straight run" "exit $RC; $why; $(cat "$W/stderr")"
+    fi
+else
+    fail "output.checkpoint_wall_interval=0.3: a checkpoint appeared" "none within 30 s"
+fi
+
+# A file-size limit (EFBIG, as a full disk's ENOSPC) while a checkpoint is written: a clear error, no
+# temporary left, and the checkpoint before it intact (the run continues from it bit for bit).
+FULL=$W/full
+cp -r -- "$STRAIGHT" "$FULL"
+full_rc=0
+( trap '' XFSZ; ulimit -f 64; exec "$GRIT" run "$DEMO" --restart "$FULL" "${DEMO_SET[@]}" --set output.snapshots=false \
+    --set time.end=1.4e-5 ) >"$W/stdout" 2>"$W/stderr" || full_rc=$?
+if [[ $full_rc -ne 0 && $full_rc -ne 2 ]] && grep -q 'cannot write the checkpoint' "$W/stderr" &&
+    grep -q 'intact' "$W/stderr" && ! compgen -G "$FULL/checkpoints/.*.tmp" >/dev/null; then
+    pass "a checkpoint that cannot be written (file-size limit): a clear error, no temporary left: $(cat "$W/stderr")"
+else
+    fail "a checkpoint that cannot be written (file-size limit): a clear error" "exit $full_rc: $(cat "$W/stderr")"
+fi
+
 # A finished run extended with --set time.end: rows continue, none repeated.
 grit run "$DEMO" --restart "$STRAIGHT" "${DEMO_SET[@]}" --set time.end=1.4e-5
 if [[ $RC -eq 0 ]] && "${JSON_PY:-python3}" - "$STRAIGHT/series.csv" <<'PYEOF'
@@ -685,6 +777,64 @@ then
     pass "--restart a finished run with --set time.end=1.4e-5: series continues to 1.4e-5 without repeated rows"
 else
     fail "--restart a finished run with --set time.end: series continues without repeated rows" "exit $RC; $(cat "$W/stderr")"
+fi
+
+# The run whose checkpoint could not be written (above) continues from the checkpoint before it, as the
+# straight run extended to 1.4e-5 did.
+grit run "$DEMO" --restart "$FULL" "${DEMO_SET[@]}" --set time.end=1.4e-5
+if [[ $RC -eq 0 ]] && cmp -s "$FULL/series.csv" "$STRAIGHT/series.csv"; then
+    pass "after the failed checkpoint the run continues from the one before it: series.csv identical"
+else
+    fail "after the failed checkpoint the run continues from the one before it" "exit $RC: $(cat "$W/stderr")"
+fi
+
+# summary.json sums the run's segments; a restart with nothing left to run says so and changes nothing.
+if "${JSON_PY:-python3}" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j["segments"] == 2 and j["wall_time_s"] > j["segment_wall_time_s"] > 0 else 1)' "$STRAIGHT/summary.json"; then
+    pass "summary.json of an extended run sums its segments (segments 2, wall_time_s over both)"
+else
+    fail "summary.json of an extended run sums its segments" "$(grep -E 'segment|wall_time' "$STRAIGHT/summary.json")"
+fi
+cp -- "$STRAIGHT/summary.json" "$W/summary_before.json"
+grit run "$DEMO" --restart "$STRAIGHT" "${DEMO_SET[@]}" --set time.end=1.4e-5
+if [[ $RC -eq 0 ]] && grep -q 'already at time.end' "$W/stderr" && cmp -s "$STRAIGHT/summary.json" "$W/summary_before.json"; then
+    pass "--restart a run already at time.end: says so, summary.json's totals kept: $(cat "$W/stderr")"
+else
+    fail "--restart a run already at time.end: says so, summary.json's totals kept" "exit $RC: $(cat "$W/stderr")"
+fi
+
+# A fresh run into a folder that holds a run is refused (exit 2, naming --restart and --overwrite) and
+# changes nothing; with --overwrite it replaces the run and its derived files (plots), not other files.
+REPLACED=$W/replaced
+cp -r -- "$STRAIGHT" "$REPLACED"
+mkdir -p "$REPLACED/plots" && touch "$REPLACED/plots/crater_profile.png" "$REPLACED/notes.txt"
+stamp=$(stat -c %Y "$REPLACED/summary.json")
+grit run "$DEMO" --out "$REPLACED" "${DEMO_SET[@]}"
+if [[ $RC -eq 2 ]] && grep -q "the folder holds a completed run of case 'demo'" "$W/stderr" &&
+    grep -q -- '--restart' "$W/stderr" && grep -q -- '--overwrite' "$W/stderr" &&
+    [[ $(stat -c %Y "$REPLACED/summary.json") -eq $stamp && -e $REPLACED/plots/crater_profile.png ]]; then
+    pass "a fresh run into a folder that holds a run is refused, nothing touched: $(cat "$W/stderr")"
+else
+    fail "a fresh run into a folder that holds a run is refused" "exit $RC: $(cat "$W/stderr")"
+fi
+grit run "$DEMO" --out "$REPLACED" "${DEMO_SET[@]}" --overwrite
+if [[ $RC -eq 0 && ! -e $REPLACED/plots && -f $REPLACED/notes.txt ]] &&
+    [[ $(tail -n 1 "$REPLACED/series.csv" | cut -d, -f1) == 1.2e-05 ]]; then
+    pass "--overwrite replaces the run (series to 1.2e-5 again) and its plots, keeps other files"
+else
+    fail "--overwrite replaces the run and its plots, keeps other files" "exit $RC: $(cat "$W/stderr"); $(ls "$REPLACED")"
+fi
+grit run "$DEMO" --restart "$REPLACED" --overwrite
+if [[ $RC -eq 2 ]] && grep -q -- '--overwrite: a restart continues' "$W/stderr"; then
+    pass "--restart with --overwrite refused: $(cat "$W/stderr")"
+else
+    fail "--restart with --overwrite refused" "exit $RC: $(cat "$W/stderr")"
+fi
+touch "$W/a_file"
+grit run "$HYDRO" --end-time 0 --out "$W/a_file/run"
+if [[ $RC -eq 2 ]] && grep -q -- "--out $W/a_file/run: cannot create the folder" "$W/stderr"; then
+    pass "an output folder that cannot be made is refused before the run: $(cat "$W/stderr")"
+else
+    fail "an output folder that cannot be made is refused before the run" "exit $RC: $(cat "$W/stderr")"
 fi
 
 # A run started by an older grit, whose series.csv lacks a column added since, continues: the column is
@@ -772,6 +922,15 @@ if [[ $RC -eq 0 && $(grep -c 'done before, kept' "$W/stdout") -eq 2 &&
     pass "sweep: finished runs are not redone"
 else
     fail "sweep: finished runs are not redone" "exit $RC: $(cat "$W/stdout")"
+fi
+# The same sweep folder with another --set: the kept runs were of other settings, so they run again.
+grit sweep "$AWJ" --param jet.pressure=1.5e8,2.5e8 --set time.end=5e-6 --set output.snapshots=false --out "$SWEEP"
+if [[ $RC -eq 0 && $(grep -c 'done before with other --set' "$W/stdout") -eq 2 ]] &&
+    "${JSON_PY:-python3}" -c 'import json,sys; sys.exit(0 if abs(json.load(open(sys.argv[1]))["end_time"] - 5e-6) < 1e-12 else 1)' \
+        "$SWEEP/jet.pressure=2.5e8/summary.json"; then
+    pass "sweep: runs done before with other --set run again"
+else
+    fail "sweep: runs done before with other --set run again" "exit $RC: $(cat "$W/stdout")"
 fi
 grit sweep "$AWJ" --param jet.pressure=150 --out "$W/badsweep"
 if [[ $RC -eq 2 ]] && grep -q "key 'jet.pressure' = 150" "$W/stderr" && [[ ! -e "$W/badsweep" ]]; then

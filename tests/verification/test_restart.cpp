@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
+#include <memory>
 
 #include "grit/core/error.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -341,4 +343,57 @@ TEST(Restart, CheckpointOfTheOtherSideOfASymmetryPlaneIsRefused) {
         }
     }
     fs::remove(file);
+}
+
+namespace {
+
+std::string file_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The demo with outputs every 2.5 us: 3 x 2.5e-6 = 7.500000000000001e-06 lies one unit in the last
+// place above the end 7.5e-6 a user writes, so a run ending there and one passing it aimed their steps
+// at different doubles while output times were a running sum and the end was not snapped onto them.
+grit::io::CaseSpec extension_case(const std::string& end) {
+    return grit::io::read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "demo.toml",
+                               {"output.interval=2.5e-6", "output.snapshots=false", "time.end=" + end});
+}
+
+// Runs `spec` into `dir` with files, fresh or continuing the run there; returns the simulation.
+std::unique_ptr<Simulation<2>> run_into(const grit::io::CaseSpec& spec, const fs::path& dir, bool restart) {
+    grit::sim::RunOptions options;
+    options.output_dir = dir;
+    options.quiet = true;
+    if (restart) options.restart = dir;
+    auto s = std::make_unique<Simulation<2>>(spec, options);
+    s->run();
+    return s;
+}
+
+}  // namespace
+
+// A finished run extended (--restart DIR --set time.end=...) continues as if it had never stopped: end
+// at T, extend to 2T and to 3T (two extensions), or at once to 3T (one), against a run straight to 3T
+// that passes T and 2T: the same state bit for bit and the same series.csv.
+TEST(Restart, ExtendingAFinishedRunIsBitIdenticalToARunThatNeverStopped) {
+    grit::parallel::set_threads(2);
+    const fs::path root = fs::temp_directory_path() / "grit_restart_extension";
+    fs::remove_all(root);
+    const auto straight = run_into(extension_case("2.25e-5"), root / "straight", false);
+    const std::string straight_series = file_text(root / "straight" / "series.csv");
+
+    run_into(extension_case("7.5e-6"), root / "twice", false);
+    run_into(extension_case("1.5e-5"), root / "twice", true);
+    const std::string halfway = file_text(root / "twice" / "series.csv");
+    EXPECT_EQ(straight_series.compare(0, halfway.size(), halfway), 0) << "series.csv at 2T differs";
+    const auto twice = run_into(extension_case("2.25e-5"), root / "twice", true);
+    expect_same_state(*straight, *twice);
+    EXPECT_EQ(file_text(root / "twice" / "series.csv"), straight_series);
+
+    run_into(extension_case("7.5e-6"), root / "once", false);
+    const auto once = run_into(extension_case("2.25e-5"), root / "once", true);
+    expect_same_state(*straight, *once);
+    EXPECT_EQ(file_text(root / "once" / "series.csv"), straight_series);
+    fs::remove_all(root);
 }

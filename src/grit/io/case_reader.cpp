@@ -1001,6 +1001,8 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     c.write_snapshots = output.flag_or("snapshots", true);
     c.checkpoint_interval = output.number_or("checkpoint_interval", 0.0, non_negative("[s]"));
     c.checkpoint_keep = output.integer_or("checkpoint_keep", c.checkpoint_keep, 1, 1000000);
+    c.checkpoint_wall_interval =
+        output.number_or("checkpoint_wall_interval", c.checkpoint_wall_interval, non_negative("[s]"));
     // A time.end in the wrong unit (10 s for 10 us) would write millions of outputs: refuse it here.
     const double max_outputs = output.number_or("max_outputs", 100000.0, positive("[-]"));
     if (c.end_time / c.output_interval + 1.0 > max_outputs)

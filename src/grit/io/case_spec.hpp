@@ -227,6 +227,9 @@ struct CaseSpec {
     /// output.checkpoint_interval [s]: checkpoints during the run (0: only at the end and on SIGINT/SIGTERM)
     double checkpoint_interval = 0.0;
     int checkpoint_keep = 2;       ///< output.checkpoint_keep: the latest checkpoints kept in checkpoints/
+    /// output.checkpoint_wall_interval [s of wall time]: a checkpoint at least this often, so a run killed
+    /// without warning (SIGKILL, a node lost) loses at most this much work; 0: none on wall time.
+    double checkpoint_wall_interval = 1800.0;
 
     double particle_spacing = 0.0;       ///< numerics.particle_spacing [m]
     double smoothing_ratio = 1.25;       ///< numerics.smoothing_ratio h/dx (paper: 1.25)

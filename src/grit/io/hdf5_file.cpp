@@ -209,6 +209,19 @@ Hdf5File Hdf5File::open(const std::filesystem::path& file) {
 
 std::int64_t Hdf5File::open_root() { return check(H5Gopen2(file_id_, "/", H5P_DEFAULT), "cannot open " + path_ + "/"); }
 
+void Hdf5File::close() {
+    // Every handle under the root is closed by now (the groups are scoped); a write that fails only at
+    // the flush (a full disk, a file-size limit) is reported here rather than lost in the destructor.
+    const std::string what = path_;
+    if (id_ >= 0) H5Gclose(id_);
+    id_ = -1;
+    if (file_id_ < 0) return;
+    const herr_t flushed = H5Fflush(file_id_, H5F_SCOPE_GLOBAL);
+    const herr_t closed = H5Fclose(file_id_);
+    file_id_ = -1;
+    if (flushed < 0 || closed < 0) throw Hdf5Error("cannot finish writing " + what + " (disk full or not writable?)");
+}
+
 Hdf5File::~Hdf5File() {
     if (id_ >= 0) H5Gclose(id_);
     id_ = -1;

@@ -67,6 +67,9 @@ public:
     static Hdf5File open(const std::filesystem::path& file);
     Hdf5File(Hdf5File&& o) noexcept : Hdf5Group(std::move(o)), file_id_(o.file_id_) { o.file_id_ = -1; }
     ~Hdf5File();
+    /// Flushes and closes the file, throwing Hdf5Error if the data did not reach it (the destructor
+    /// closes silently); nothing may be used after it.
+    void close();
 
 private:
     Hdf5File(std::int64_t id, std::string path) : Hdf5Group(-1, std::move(path)), file_id_(id) { id_ = open_root(); }

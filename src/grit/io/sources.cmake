@@ -6,4 +6,6 @@ set(GRIT_IO_SOURCES
   io/csv_file.cpp
   io/hdf5_file.cpp
   io/particle_budget.cpp
+  io/run_folder.cpp
+  io/durable_file.cpp
 )

@@ -128,8 +128,15 @@ double ProbesModule<Dim>::value(std::size_t k) const {
 
 template <int Dim>
 void ProbesModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    for (std::size_t k = 0; k < setup_.spec.probes.size(); ++k)
-        out.push_back(sim::OutputValue::real(setup_.spec.probes[k].name, value(k)).in_group("probes"));
+    for (std::size_t k = 0; k < setup_.spec.probes.size(); ++k) {
+        const auto& p = setup_.spec.probes[k];
+        const char* unit = p.kind == "front"           ? "m"
+                           : p.quantity == "pressure" ? "Pa"
+                           : p.quantity == "density"  ? "kg/m^3"
+                           : p.quantity == "velocity" ? "m/s"
+                                                      : "-";
+        out.push_back(sim::OutputValue::real(p.name, value(k)).in_group("probes").in_unit(unit));
+    }
 }
 
 template class CraterModule<2>;

@@ -29,9 +29,10 @@ struct OutputValue {
     bool in_series = true;   ///< a series.csv column
     bool in_summary = true;  ///< a summary.json key
     std::string group;       ///< summary.json: under this object (e.g. "probes"); empty: top level
+    std::string unit;        ///< summary.json's "units"; empty: sim/output_units.cpp's table names it
 
-    static OutputValue real(std::string name, double value) { return {std::move(name), value, false, true, true, {}}; }
-    static OutputValue count(std::string name, double value) { return {std::move(name), value, true, true, true, {}}; }
+    static OutputValue real(std::string name, double value) { return {std::move(name), value, false, true, true, {}, {}}; }
+    static OutputValue count(std::string name, double value) { return {std::move(name), value, true, true, true, {}, {}}; }
     OutputValue series_only() && {
         in_summary = false;
         return std::move(*this);
@@ -42,6 +43,10 @@ struct OutputValue {
     }
     OutputValue in_group(std::string g) && {
         group = std::move(g);
+        return std::move(*this);
+    }
+    OutputValue in_unit(std::string u) && {
+        unit = std::move(u);
         return std::move(*this);
     }
 };

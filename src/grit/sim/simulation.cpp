@@ -5,17 +5,18 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <fstream>
 #include <limits>
 #include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <system_error>
 
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/core/error.hpp"
+#include "grit/io/durable_file.hpp"
+#include "grit/io/run_folder.hpp"
 #include "grit/io/vtu_writer.hpp"
 #include "grit/modules/abrasive_feed.hpp"
 #include "grit/modules/analyses.hpp"
@@ -35,7 +36,10 @@
 #include "grit/sim/geometry.hpp"
 #include "grit/sim/particle_blocks.hpp"
 #include "grit/sim/progress.hpp"
+#include "grit/sim/run_control.hpp"
 #include "grit/sim/run_estimate.hpp"
+#include "grit/sim/output_times.hpp"
+#include "grit/sim/output_units.hpp"
 #include "grit/sim/run_log.hpp"
 #include "grit/sim/step_to_target.hpp"
 #include "grit/sim/version.hpp"
@@ -80,30 +84,6 @@ io::PointCloud named_snapshot(const particles::SphParticles<Dim>& particles, con
     cloud.names.push_back(std::move(phases));
     return cloud;
 }
-
-// SIGINT/SIGTERM set this; the run loop checks it after each step and stops with a checkpoint.
-std::atomic<int> pending_signal{0};
-extern "C" void on_stop_signal(int signal) { pending_signal.store(signal); }
-
-// Installs the stop handlers for the lifetime of a run and restores the previous ones after it.
-class StopSignals {
-public:
-    StopSignals() {
-        pending_signal.store(0);
-        previous_int_ = std::signal(SIGINT, on_stop_signal);
-        previous_term_ = std::signal(SIGTERM, on_stop_signal);
-    }
-    ~StopSignals() {
-        std::signal(SIGINT, previous_int_);
-        std::signal(SIGTERM, previous_term_);
-    }
-    StopSignals(const StopSignals&) = delete;
-    StopSignals& operator=(const StopSignals&) = delete;
-
-private:
-    void (*previous_int_)(int);
-    void (*previous_term_)(int);
-};
 
 std::string read_text(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -452,6 +432,8 @@ std::vector<OutputValue> Simulation<Dim>::output_values() const {
             .series_only(),
     };
     for (const auto& m : modules_) m->output_values(out);
+    for (auto& v : out)
+        if (v.unit.empty()) v.unit = output_unit(v.name, Dim);
     return out;
 }
 
@@ -460,15 +442,12 @@ void Simulation<Dim>::open_output(bool restart) {
     namespace fs = std::filesystem;
     place_ = {options_.output_dir, spec_.name, spec_.write_snapshots};
     const fs::path dir = options_.output_dir;
+    // A fresh run replaces what an earlier run left here (the CLI asks for --overwrite first), derived
+    // files (plots) included, so that nothing stale sits beside the new data.
+    if (!restart) io::clear_run_folder(dir);
     fs::create_directories(dir / "snapshots");
     fs::create_directories(dir / "checkpoints");
-    if (!restart) {
-        // A fresh run replaces what an earlier run left here.
-        for (const auto& e : fs::directory_iterator(dir / "snapshots"))
-            if (e.path().extension() == ".vtu") fs::remove(e.path());
-        for (const auto& c : checkpoints_in(dir / "checkpoints")) fs::remove(c);
-        fs::remove(dir / "summary.json");
-    } else {
+    if (restart) {
         // Checkpoints after the one continued belong to a future this run replaces.
         for (const auto& c : checkpoints_in(dir / "checkpoints"))
             if (checkpoint_step(c) > state_.clock.step) fs::remove(c);
@@ -518,8 +497,10 @@ void Simulation<Dim>::save_checkpoint(const std::filesystem::path& file) {
 template <int Dim>
 void Simulation<Dim>::write_checkpoint_file(const std::filesystem::path& file) const {
     namespace fs = std::filesystem;
-    const fs::path temporary = file.parent_path() / ("." + file.filename().string() + ".tmp");
-    {
+    // Written whole under a temporary name, then put in place (io/durable_file.hpp): a run killed at any
+    // moment, or a disk that fills, leaves the previous checkpoint as it was.
+    const fs::path temporary = io::temporary_name(file);
+    try {
         auto h5 = io::Hdf5File::create(temporary);
         h5.write("format", "grit checkpoint");
         h5.write("format_version", checkpoint_format_version);
@@ -545,9 +526,18 @@ void Simulation<Dim>::write_checkpoint_file(const std::filesystem::path& file) c
         run.write("mass_in", state_.ledger.in);
         run.write("mass_out", state_.ledger.out);
         run.write("eroded_mass", state_.ledger.eroded);
-        run.write("next_output", next_output_);
-        run.write("next_checkpoint", next_checkpoint_);
+        // What is due next (a restart derives both from the time: output_times.hpp).
+        const Cadence outputs{spec_.output_interval};
+        run.write("next_output", outputs.at(outputs.next_after(clock.time)));
+        const Cadence checkpoints{spec_.checkpoint_interval};
+        run.write("next_checkpoint",
+                  spec_.checkpoint_interval > 0.0 ? checkpoints.at(checkpoints.next_after(clock.time)) : 0.0);
         run.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
+        // The run's totals so far, this segment's included: summary.json sums the segments.
+        run.write("segments", earlier_.count + 1);
+        run.write("wall_time_s", earlier_.wall_time_s + segment_clock_.seconds());
+        run.write("particle_steps", earlier_.particle_steps + particle_steps_);
+        run.write("pair_steps", earlier_.pair_steps + pair_steps_);
         run.write("series_rows", static_cast<std::int64_t>(series_ ? series_->rows() : restored_series_rows_));
         io::save_pvd_entries(run, "pvd", pvd_ ? pvd_->entries() : restored_pvd_);
 
@@ -566,8 +556,19 @@ void Simulation<Dim>::write_checkpoint_file(const std::filesystem::path& file) c
             auto g = modules.create_group(m->name());
             m->save(g);
         }
+        h5.close();
+    } catch (const io::Hdf5Error& e) {
+        std::error_code ignored;
+        fs::remove(temporary, ignored);
+        throw std::runtime_error(fmt::format("cannot write the checkpoint {} ({}); the checkpoints written before "
+                                             "it are intact",
+                                             file.string(), e.what()));
     }
-    fs::rename(temporary, file);  // atomic: a run killed while writing leaves the previous checkpoint
+    try {
+        io::commit_file(temporary, file);
+    } catch (const std::system_error& e) {
+        throw std::runtime_error(fmt::format("{}; the checkpoints written before it are intact", e.what()));
+    }
 }
 
 template <int Dim>
@@ -614,9 +615,15 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
         state_.ledger.in = run.read_double("mass_in");
         state_.ledger.out = run.read_double("mass_out");
         state_.ledger.eroded = run.read_double("eroded_mass");
-        next_output_ = run.read_double("next_output");
-        next_checkpoint_ = run.read_double("next_checkpoint");
         snapshot_index_ = static_cast<long>(run.read_int("snapshot_index"));
+        if (run.has_attribute("segments")) {
+            earlier_.count = run.read_int("segments");
+            earlier_.wall_time_s = run.read_double("wall_time_s");
+            earlier_.particle_steps = run.read_double("particle_steps");
+            earlier_.pair_steps = run.read_double("pair_steps");
+        } else {
+            earlier_ = {1, 0.0, 0.0, 0.0};  // written before grit kept the totals: the wall time before is unknown
+        }
         restored_series_rows_ = static_cast<long>(run.read_int("series_rows"));
         restored_pvd_ = io::load_pvd_entries(run, "pvd");
 
@@ -662,9 +669,13 @@ RunSummary Simulation<Dim>::summarize(double wall_time, const std::string& statu
     s.particles = state_.particles.size() - state_.particles.image_count();
     s.steps = state_.clock.step;
     s.end_time = state_.clock.time;
-    s.wall_time_s = wall_time;
-    s.particle_steps_per_second = wall_time > 0.0 ? particle_steps_ / wall_time : 0.0;
-    s.pair_interactions_per_second = wall_time > 0.0 ? pair_steps_ / wall_time : 0.0;
+    // Over every segment of the run (a restart continues the totals of the checkpoint it starts from).
+    const double wall = earlier_.wall_time_s + wall_time;
+    s.wall_time_s = wall;
+    s.segment_wall_time_s = wall_time;
+    s.segments = earlier_.count + 1;
+    s.particle_steps_per_second = wall > 0.0 ? (earlier_.particle_steps + particle_steps_) / wall : 0.0;
+    s.pair_interactions_per_second = wall > 0.0 ? (earlier_.pair_steps + pair_steps_) / wall : 0.0;
     s.values = output_values();
     const auto d = analysis::compute_diagnostics(state_.particles);
     s.momentum.assign(d.momentum.c, d.momentum.c + Dim);
@@ -685,16 +696,23 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["git_revision"] = git_revision();
     j["dimension"] = Dim;
     j["case_file"] = spec_.source.string();
+    j["case_digest"] = io::case_digest(spec_.source);
+    j["overrides"] = spec_.overrides;
     j["particle_spacing"] = spec_.particle_spacing;
     for (const auto& m : modules_) m->describe(j);
     // The x >= 0 half of a symmetric set-up: masses, energies and counts are the half's.
     if (spec_.symmetry_plane) j["symmetry_plane"] = "x";
     j["threads"] = run_threads_ > 0 ? run_threads_ : parallel::max_threads();
     if (options_.adapt_threads) j["thread_changes"] = thread_changes_;
+    // The threads the steps of this segment actually ran with, on average (fewer than `threads` where the
+    // governor gave a core to another process).
+    if (thread_step_count_ > 0) j["threads_used_mean"] = thread_steps_ / static_cast<double>(thread_step_count_);
     j["particles"] = s.particles;
     j["steps"] = s.steps;
     j["end_time"] = s.end_time;
     j["wall_time_s"] = s.wall_time_s;
+    j["segments"] = s.segments;
+    j["segment_wall_time_s"] = s.segment_wall_time_s;
     j["particle_steps_per_second"] = s.particle_steps_per_second;
     j["pair_interactions_per_second"] = s.pair_interactions_per_second;
     j["neighbor_list_builds"] = state_.neighbors.builds();
@@ -705,15 +723,44 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     for (const auto& v : s.values)
         if (v.in_summary && !v.group.empty()) j[v.group][v.name] = json_number(v);
     for (const auto& t : s.stages) j["stage_seconds"][t.name] = t.seconds;
+    // The unit of every key above that carries one, and of every series.csv column.
+    nlohmann::ordered_json units = {{"end_time", "s"},         {"wall_time_s", "s"},
+                                    {"segment_wall_time_s", "s"}, {"particle_spacing", "m"},
+                                    {"particle_steps_per_second", "1/s"}, {"pair_interactions_per_second", "1/s"},
+                                    {"momentum", Dim == 2 ? "kg m/s per m" : "kg m/s"}};
+    for (const auto& v : s.values) units[v.name] = v.unit;
+    j["units"] = units;
     j["restarted_from"] = s.restarted_from.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(s.restarted_from);
-    std::ofstream out(options_.output_dir / "summary.json");
-    out << j.dump(2) << '\n';
+    // In place whole or not at all (a sweep reads it to tell a finished run).
+    const auto file = options_.output_dir / "summary.json";
+    const auto temporary = io::temporary_name(file);
+    {
+        std::ofstream out(temporary);
+        out << j.dump(2) << '\n';
+        out.flush();
+        if (!out) throw std::runtime_error(fmt::format("cannot write {} (disk full or not writable?)", file.string()));
+    }
+    io::commit_file(temporary, file);
 }
 
 template <int Dim>
 RunSummary Simulation<Dim>::run() {
     const bool restart = !options_.restart.empty();
     if (restart) load_checkpoint(resolve_checkpoint(options_.restart));
+    // Output k at k x output.interval, and an end on an output time within round-off is that time:
+    // a run that ends at T and one that passes T take the same steps (output_times.hpp).
+    const Cadence outputs{spec_.output_interval};
+    const double end = outputs.snap(spec_.end_time);
+    auto& c = state_.clock;
+    if (restart && c.time >= end * (1.0 - same_time_tolerance)) {
+        // Nothing to run: the run's files, summary.json's totals and its checkpoints stay as they are.
+        RunSummary done = summarize(0.0, "completed");
+        done.segments = earlier_.count;
+        done.message = fmt::format("already at time.end: the checkpoint is at t = {:.9g} s (step {}), time.end = "
+                                   "{:.9g} s; nothing to run (extend the run with --set time.end=...)",
+                                   c.time, c.step, spec_.end_time);
+        return done;
+    }
     if (options_.write_files) open_output(restart);
     std::unique_ptr<RunLog> log;
     if (options_.write_files) {
@@ -729,7 +776,7 @@ RunSummary Simulation<Dim>::run() {
             log->warn(note);
         }
     }
-    core::Stopwatch clock;
+    segment_clock_.restart();
     run_threads_ = parallel::max_threads();
     std::optional<parallel::ThreadGovernor> governor;
     if (options_.adapt_threads) {
@@ -743,9 +790,10 @@ RunSummary Simulation<Dim>::run() {
         int n;
         ~RestoreThreads() { parallel::set_threads(n); }
     } restore_threads{run_threads_};
-    Progress progress(!options_.quiet);
-    StopSignals signals;
-    auto& c = state_.clock;
+    Progress progress(!options_.quiet, options_.progress_every_s,
+                      log ? std::function<void(const std::string&)>([&log](const std::string& line) { log->info(line); })
+                          : std::function<void(const std::string&)>());
+    RunControl control(options_.max_wall_time_s, options_.write_files ? spec_.checkpoint_wall_interval : 0.0);
     auto show_progress = [&](bool force) {
         progress.update(c.time, spec_.end_time, c.step, state_.particles.size(),
                         state_.grains ? state_.grains->grains().size() : Index{0}, force);
@@ -763,14 +811,13 @@ RunSummary Simulation<Dim>::run() {
             if (!options_.quiet) fmt::print(stderr, "{}\n", warning);
             if (log) log->warn(warning);
         }
-        if (!restart) {
-            write_output();
-            next_output_ = spec_.output_interval;
-            next_checkpoint_ = spec_.checkpoint_interval;
-        }
-        const double end = spec_.end_time;
-        while (c.time < end * (1.0 - 1e-12)) {
-            const double target = std::min(end, next_output_);
+        if (!restart) write_output();
+        const Cadence checkpoints{spec_.checkpoint_interval};
+        const bool timed_checkpoints = spec_.checkpoint_interval > 0.0;
+        long next_output = outputs.next_after(c.time);
+        long next_checkpoint = timed_checkpoints ? checkpoints.next_after(c.time) : 0;
+        while (c.time < end * (1.0 - same_time_tolerance)) {
+            const double target = std::min(end, outputs.at(next_output));
             c.dt = step_toward(c.time, target, c.dt);  // land exactly on the output time, in equal steps
             step();
             if (governor) {
@@ -779,21 +826,25 @@ RunSummary Simulation<Dim>::run() {
                     if (log) log->info(fmt::format("step {} (t = {:.9g} s): {}", c.step, c.time, change));
                 }
             }
+            thread_steps_ += parallel::max_threads();
+            ++thread_step_count_;
             if (options_.dump_from_step > 0 && c.step >= options_.dump_from_step) write_dump();
             show_progress(false);
-            if (c.time >= target * (1.0 - 1e-12)) {
+            if (c.time >= target * (1.0 - same_time_tolerance)) {
                 write_output();
-                while (next_output_ <= c.time * (1.0 + 1e-12)) next_output_ += spec_.output_interval;
+                next_output = std::max(next_output + 1, outputs.next_after(c.time));
             }
-            if (spec_.checkpoint_interval > 0.0 && c.time >= next_checkpoint_ * (1.0 - 1e-12)) {
+            if (timed_checkpoints && c.time >= checkpoints.at(next_checkpoint) * (1.0 - same_time_tolerance)) {
                 write_checkpoint();
-                while (next_checkpoint_ <= c.time * (1.0 + 1e-12)) next_checkpoint_ += spec_.checkpoint_interval;
+                next_checkpoint = std::max(next_checkpoint + 1, checkpoints.next_after(c.time));
+            } else if (control.wall_checkpoint_due()) {
+                write_checkpoint();
             }
-            if (const int signal = pending_signal.load(); signal != 0) {
+            if (const auto stop = control.stop_requested()) {
                 // Stop cleanly: a checkpoint to continue from, and the state now as a snapshot.
                 progress.finish();
-                std::string message = fmt::format("interrupted by signal {} at step {} (t = {:.9g} s)", signal,
-                                                  c.step, c.time);
+                std::string message = fmt::format("{} at step {} (t = {:.9g} s)", stop->reason, c.step, c.time);
+                const int signal = stop->signal;
                 if (options_.write_files) {
                     write_checkpoint();
                     if (has_sph_) {
@@ -803,7 +854,7 @@ RunSummary Simulation<Dim>::run() {
                     }
                     message += "; continue with --restart " + options_.output_dir.string();
                 }
-                write_summary(summarize(clock.seconds(), "interrupted"), message);
+                write_summary(summarize(segment_clock_.seconds(), "interrupted"), message);
                 if (log) log->warn(message);
                 throw Interrupted(signal, message);
             }
@@ -812,12 +863,12 @@ RunSummary Simulation<Dim>::run() {
         progress.finish();
     } catch (const core::BlowUpError& e) {
         progress.finish();
-        write_summary(summarize(clock.seconds(), "blow_up"), e.what());
+        write_summary(summarize(segment_clock_.seconds(), "blow_up"), e.what());
         if (log) log->error(e.what());
         throw;
     }
     write_checkpoint();  // a finished run can be extended: --restart DIR --set time.end=...
-    RunSummary summary = summarize(clock.seconds(), "completed");
+    RunSummary summary = summarize(segment_clock_.seconds(), "completed");
     write_summary(summary, "");
     if (log)
         log->info(fmt::format("completed: {} steps to t = {:.6g} s, {} particles, {:.3g} s wall, {:.3g} particle-steps/s",

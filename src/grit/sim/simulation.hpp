@@ -38,6 +38,11 @@ struct RunOptions {
     /// Use fewer threads while another process holds a core, and take them back when it is free
     /// (parallel::ThreadGovernor; the CLI's runs). Results do not depend on the thread count.
     bool adapt_threads = false;
+    /// A plain progress line (step, t, rate, ETA) this often [s of wall time] in run.log, and on standard
+    /// error when it is not a terminal (0: none; a terminal's live line is kept up to date regardless).
+    double progress_every_s = 30.0;
+    /// Stop with a checkpoint after this much wall time [s] (--max-wall-time; 0: no limit).
+    double max_wall_time_s = 0.0;
 };
 
 /// What a finished run reports (also written to summary.json).
@@ -46,20 +51,24 @@ struct RunSummary {
     Index particles = 0;
     long steps = 0;
     double end_time = 0.0;
-    double wall_time_s = 0.0;
+    double wall_time_s = 0.0;          ///< over every segment of the run (a restart adds its own)
+    double segment_wall_time_s = 0.0;  ///< of this process's segment alone
+    std::int64_t segments = 1;         ///< 1 for a run that never stopped, +1 for each restart
     double particle_steps_per_second = 0.0;
     double pair_interactions_per_second = 0.0;
     std::vector<OutputValue> values;  ///< every output value (series and summary) at the end
     std::vector<double> momentum;
     std::vector<core::TimerEntry> stages;
     std::string restarted_from;  ///< the checkpoint a restarted run continued, or empty
+    std::string message;         ///< a note for the user (a restart already at time.end), or empty
 
     /// The value named `name` (throws std::out_of_range if there is none).
     double value(const std::string& name) const;
 };
 
-/// Thrown when the run stopped on SIGINT or SIGTERM after writing its checkpoint; the CLI exits with
-/// 128 + signal (130 for Ctrl-C, 143 for SIGTERM).
+/// Thrown when the run stopped before time.end after writing its checkpoint: on SIGINT, SIGTERM or SIGUSR1
+/// (the CLI exits with 128 + signal: 130 for Ctrl-C, 143 for SIGTERM, 138 for SIGUSR1) or at the wall-time
+/// limit (signal 0; exit 0, as a batch job's planned stop).
 class Interrupted : public std::runtime_error {
 public:
     Interrupted(int signal, const std::string& what) : std::runtime_error(what), signal_(signal) {}
@@ -158,8 +167,16 @@ private:
     bool has_sph_ = true;  ///< false for a grains-only case: no SPH module
     bool primed_ = false;
     double particle_steps_ = 0.0, pair_steps_ = 0.0;  ///< of this session (for the rates)
+    core::Stopwatch segment_clock_;  ///< wall time of this segment (this process's part of the run)
+    /// The segments of the run before the checkpoint this one continues (summary.json sums them all).
+    struct EarlierSegments {
+        std::int64_t count = 0;
+        double wall_time_s = 0.0, particle_steps = 0.0, pair_steps = 0.0;
+    } earlier_;
     int run_threads_ = 0;     ///< the threads run() started with (the governor's ceiling)
     int thread_changes_ = 0;  ///< how often the governor changed the count
+    double thread_steps_ = 0.0;   ///< threads summed over this segment's steps (summary.json's threads_used_mean)
+    long thread_step_count_ = 0;
 
     particles::SphParticles<Dim> last_good_;
     double last_good_time_ = 0.0;
@@ -167,7 +184,6 @@ private:
     bool blow_up_reported_ = false;  ///< set once report_blow_up has thrown, so step() passes it on as it is
 
     OutputPlace place_;
-    double next_output_ = 0.0, next_checkpoint_ = 0.0;
     long snapshot_index_ = 0;
     std::unique_ptr<io::PvdWriter> pvd_;
     std::unique_ptr<io::SeriesWriter> series_;
