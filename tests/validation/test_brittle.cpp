@@ -13,6 +13,7 @@
 
 #include "grit/material/library.hpp"
 #include "support/case_fixture.hpp"
+#include "support/validation_figures.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
@@ -83,6 +84,8 @@ TEST(Brittle, CompressiveStrengthFromJH2) {
                 expected / 1e6, 100.0 * (measured / expected - 1.0));
     EXPECT_NEAR(expected, 392.0e6, 2.0e6);
     EXPECT_NEAR(measured, expected, 0.10 * expected);
+    grit::testing::record_figure({"peak axial stress against JH-2's intact strength", 100.0 * (measured / expected - 1.0),
+                                  "%", "10 %", "JH-2, Yu et al. Table 3 sandstone"});
 }
 
 // Direct tension (plane strain): the peak within 10 % of the JH-2 tensile strength on the elastic path
@@ -94,6 +97,8 @@ TEST(Brittle, TensileStrengthFromJH2) {
     std::printf("tensile strength: measured %.2f MPa, JH-2 implies %.2f MPa (%+.1f %%)\n", measured / 1e6,
                 expected / 1e6, 100.0 * (measured / expected - 1.0));
     EXPECT_NEAR(measured, expected, 0.10 * expected);
+    grit::testing::record_figure({"peak tensile stress against JH-2's tensile strength",
+                                  100.0 * (measured / expected - 1.0), "%", "10 %", "JH-2, Yu et al. Table 3 sandstone"});
 }
 
 // Pure water jet on red sandstone (section 4.3, Table 6 speeds) in the coarse case: radial cracks open

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "support/case_fixture.hpp"
+#include "support/validation_figures.hpp"
 #include "support/case_text.hpp"
 
 using grit::testing::in_memory;
@@ -42,6 +43,8 @@ void sedimentation(double approach_tolerance) {
     const double vt = grit::testing::output_value(sim, "terminal_velocity");
     ::testing::Test::RecordProperty("terminal_velocity", std::to_string(vt));
     EXPECT_NEAR(vt, terminal, 0.03 * terminal) << "the issue's 3 %";
+    grit::testing::record_figure({"terminal velocity", 100.0 * (vt / terminal - 1.0), "%", "3 %",
+                                  "Wen-Yu drag, scripts/terminal_velocity.py"});
     if (approach_tolerance > 0.0) {
         EXPECT_NEAR(v1 / terminal, approach_1, approach_tolerance) << "at t = tau";
         EXPECT_NEAR(v2 / terminal, approach_2, approach_tolerance) << "at t = 2 tau";
@@ -186,6 +189,9 @@ void packed_bed(const std::string& solver) {
         EXPECT_NEAR(gradient, 1000.0 * body_force[k], 0.01 * 1000.0 * body_force[k]);
         // The issue asks for 10 %; the bed is uniform, so the coupling reproduces its drag law closely.
         EXPECT_NEAR(u, ergun[k], 0.02 * ergun[k]) << "body force " << body_force[k];
+        grit::testing::record_figure({"superficial velocity at rho g = " + std::to_string(static_cast<int>(1000.0 * body_force[k])) +
+                                          " Pa/m",
+                                      100.0 * (u / ergun[k] - 1.0), "%", "2 %", "Ergun (1952), scripts/ergun.py"});
         // The grains did not move.
         const auto& g = sim.grains()->grains();
         for (grit::Index i = 0; i < g.size(); ++i) ASSERT_EQ(grit::core::norm(g.velocity()[i]), 0.0);

@@ -13,6 +13,7 @@
 #include "grit/core/error.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
+#include "support/validation_figures.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
@@ -128,6 +129,10 @@ TEST(Poiseuille, PeriodicChannelMatchesSeriesSolutionAndParabola) {
     EXPECT_NEAR(sim.probe("u_centre") / u_max, 1.0, 0.015);
     EXPECT_NEAR(sim.probe("u_quarter") / u_max, 0.75, 0.015);  // a probe on the periodic face
     RecordProperty("max_error_percent", std::to_string(100.0 * e.max_error));
+    grit::testing::record_figure({"steady profile, largest error of u_max", 100.0 * e.max_error, "%", "1.5 %",
+                                  "the parabola g y (H - y) / (2 nu)"});
+    grit::testing::record_figure({"steady profile, rms error of u_max", 100.0 * e.rms_error, "%", "0.75 %",
+                                  "the parabola g y (H - y) / (2 nu)"});
     // Particles crossed the periodic face: the flow (along +x) moved them up to 0.45 mm, and those that
     // came back through x = 0 are now behind where they started.
     int crossed = 0;

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "support/case_fixture.hpp"
+#include "support/validation_figures.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
@@ -62,6 +63,8 @@ TEST(Solids, TensionFollowsHookesLaw) {
                 100.0 * (modulus / expected_modulus - 1.0));
     EXPECT_GT(samples.back().strain, 0.008);
     EXPECT_NEAR(modulus, expected_modulus, 0.02 * expected_modulus);
+    grit::testing::record_figure({"fitted plane-strain modulus", 100.0 * (modulus / expected_modulus - 1.0), "%", "2 %",
+                                  "E / (1 - nu^2), Hooke"});
     // No clumping.
     double nearest = 1e9;
     for (grit::Index i = 0; i < ps.size(); ++i)
@@ -93,6 +96,8 @@ TEST(Solids, ElasticImpactEnergyBudget) {
                 100.0 * worst, min_kinetic);
     EXPECT_LT(min_kinetic, 0.1 * e0);  // the discs did stop and store the energy
     EXPECT_LT(worst, 0.02);
+    grit::testing::record_figure({"largest energy budget error", 100.0 * worst, "%", "2 %",
+                                  "kinetic + internal energy conserved"});
 }
 
 // Cantilever plate of Gray, Monaghan & Swift (2001), first bending mode: the period within 5 % of
