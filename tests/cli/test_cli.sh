@@ -221,6 +221,8 @@ expect_input_error "empty STL file" "$W/empty.stl" "empty" -- run "$WEAR" --set 
 printf 'solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 2 0 0\nendloop\nendfacet\nendsolid\n' \
     >"$W/flat.stl"
 expect_input_error "degenerate STL facet" "$W/flat.stl" "facet 1 is degenerate" -- run "$WEAR" --set "mesh[0].file=$W/flat.stl"
+head -n -8 "$ROOT/cases/wear_angle_sweep_3d/plate.stl" >"$W/cut.stl"  # the last facet and endsolid cut off
+expect_input_error "STL file cut short" "$W/cut.stl" "cut short" -- run "$WEAR" --set "mesh[0].file=$W/cut.stl"
 expect_input_error "open STL where it must be watertight" "plate.stl" "16 open edges" "watertight" -- \
     run "$WEAR" --set 'mesh[0].watertight=true'
 expect_input_error "unknown wear model" "mesh[0].wear_model" "archard" -- run "$WEAR" --set 'mesh[0].wear_model=archard'

@@ -38,22 +38,42 @@ std::vector<Facet> read_binary(const std::filesystem::path& file, const std::str
     return facets;
 }
 
+// The whole file or an error: every facet is `facet ... outer loop, three vertices, endloop, endfacet`,
+// every solid ends with `endsolid`, so a file cut short anywhere is refused, not read in part.
 std::vector<Facet> read_ascii(const std::filesystem::path& file, const std::string& text) {
     std::vector<Facet> facets;
     std::istringstream lines(text);
     std::string line;
     long line_number = 0;
     Facet facet{};
-    int corners = -1;  // -1: outside a loop
+    enum class In { nothing, solid, in_facet, loop, looped } in = In::nothing;
+    int corners = 0;
+    long solid_at = 0, facet_at = 0;  // the lines of the solid and the facet open
+    auto expect = [&](In where, const char* word) {
+        if (in != where)
+            fail(file, fmt::format("line {}: '{}' out of place (an ASCII STL is solid, facet, outer loop, three "
+                                   "vertices, endloop, endfacet, ..., endsolid)",
+                                   line_number, word));
+    };
     while (std::getline(lines, line)) {
         ++line_number;
         std::istringstream words(line);
         std::string word;
         if (!(words >> word)) continue;
-        if (word == "outer") {
+        if (word == "solid") {
+            expect(In::nothing, "solid");
+            in = In::solid;
+            solid_at = line_number;
+        } else if (word == "facet") {
+            expect(In::solid, "facet");
+            in = In::in_facet;
+            facet_at = line_number;
+        } else if (word == "outer") {
+            expect(In::in_facet, "outer loop");
+            in = In::loop;
             corners = 0;
         } else if (word == "vertex") {
-            if (corners < 0 || corners >= 3)
+            if (in != In::loop || corners >= 3)
                 fail(file, fmt::format("line {}: a vertex outside an 'outer loop' of three", line_number));
             for (int k = 0; k < 3; ++k) {
                 std::string number;
@@ -66,16 +86,26 @@ std::vector<Facet> read_ascii(const std::filesystem::path& file, const std::stri
             }
             ++corners;
         } else if (word == "endloop") {
+            expect(In::loop, "endloop");
             if (corners != 3)
-                fail(file, fmt::format("line {}: a loop with {} vertices (a facet needs 3)", line_number,
-                                       std::max(corners, 0)));
+                fail(file, fmt::format("line {}: a loop with {} vertices (a facet needs 3)", line_number, corners));
+            in = In::looped;
+        } else if (word == "endfacet") {
+            expect(In::looped, "endfacet");
             facets.push_back(facet);
-            corners = -1;
-        } else if (word != "solid" && word != "facet" && word != "endfacet" && word != "endsolid") {
+            in = In::solid;
+        } else if (word == "endsolid") {
+            expect(In::solid, "endsolid");
+            in = In::nothing;
+        } else {
             fail(file, fmt::format("line {}: unexpected '{}' in an ASCII STL", line_number, word));
         }
     }
-    if (corners >= 0) fail(file, "the file ends inside a facet");
+    if (in == In::solid)
+        fail(file, fmt::format("the file ends without the 'endsolid' of the solid opened at line {} (cut short?)",
+                               solid_at));
+    if (in != In::nothing)
+        fail(file, fmt::format("the file ends inside the facet opened at line {} (cut short?)", facet_at));
     return facets;
 }
 
@@ -83,7 +113,8 @@ std::vector<Facet> read_ascii(const std::filesystem::path& file, const std::stri
 
 std::vector<Facet> read_stl(const std::filesystem::path& file) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) fail(file, "no such file");
+    if (!std::filesystem::exists(file, ec)) fail(file, "no such file");
+    if (!std::filesystem::is_regular_file(file, ec)) fail(file, "not a regular file (a folder, a device or a pipe)");
     std::ifstream in(file, std::ios::binary);
     if (!in) fail(file, "cannot be opened");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -95,8 +126,15 @@ std::vector<Facet> read_stl(const std::filesystem::path& file) {
     if (bytes.size() >= 84 && bytes.size() == 84 + 50 * static_cast<std::size_t>(count)) {
         facets = read_binary(file, bytes, count);
     } else if (const auto start = bytes.find_first_not_of(" \t\r\n");
-               start != std::string::npos && bytes.compare(start, 5, "solid") == 0) {
+               start != std::string::npos && bytes.compare(start, 5, "solid") == 0 &&
+               bytes.find('\0') == std::string::npos) {
         facets = read_ascii(file, bytes);
+    } else if (bytes.size() >= 84 && bytes.find('\0') != std::string::npos) {
+        // Binary (text has no NUL byte) whose size does not match the triangle count in its header.
+        fail(file, fmt::format("a binary STL of {} bytes, where its header's {} facets need {}: {}", bytes.size(),
+                               count, 84 + 50 * static_cast<std::size_t>(count),
+                               bytes.size() < 84 + 50 * static_cast<std::size_t>(count) ? "cut short"
+                                                                                         : "bytes after the last facet"));
     } else {
         fail(file, fmt::format("neither an ASCII STL (it does not begin with 'solid') nor a binary one ({} bytes, "
                                "where a binary STL of {} facets has {})",

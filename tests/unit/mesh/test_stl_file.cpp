@@ -74,4 +74,35 @@ TEST(StlFile, ErrorsNameTheFileAndTheProblem) {
     EXPECT_NE(error_of(dir / "two.stl").find("2 vertices"), std::string::npos);
     write_text(dir / "none.stl", "solid s\nendsolid s\n");
     EXPECT_NE(error_of(dir / "none.stl").find("no facet"), std::string::npos);
+    std::filesystem::create_directories(dir / "folder.stl");
+    EXPECT_NE(error_of(dir / "folder.stl").find("not a regular file"), std::string::npos);
+}
+
+// A file cut short anywhere is refused, never read in part: an ASCII file without its endsolid, one cut
+// inside a facet, and a binary file shorter (or longer) than its triangle count says.
+TEST(StlFile, FileCutShortIsRefusedWithWhereItEnds) {
+    const auto dir = scratch("cut");
+    const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+    write_text(dir / "whole.stl", "solid s\n" + facet + facet + "endsolid s\n");
+    EXPECT_EQ(read_stl(dir / "whole.stl").size(), 2u);
+    write_text(dir / "no_end.stl", "solid s\n" + facet + facet);
+    EXPECT_NE(error_of(dir / "no_end.stl").find("without the 'endsolid' of the solid opened at line 1"), std::string::npos)
+        << error_of(dir / "no_end.stl");
+    write_text(dir / "in_facet.stl", "solid s\n" + facet + "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\n");
+    EXPECT_NE(error_of(dir / "in_facet.stl").find("ends inside the facet opened at line 9"), std::string::npos)
+        << error_of(dir / "in_facet.stl");
+    write_text(dir / "no_endfacet.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nfacet normal 0 0 1\n");
+    EXPECT_NE(error_of(dir / "no_endfacet.stl").find("line 8: 'facet' out of place"), std::string::npos)
+        << error_of(dir / "no_endfacet.stl");
+    const auto facets = box_facets(V{{0, 0, 0}}, V{{1, 2, 3}});
+    write_stl(dir / "b.stl", facets);
+    const auto size = std::filesystem::file_size(dir / "b.stl");
+    for (const auto cut : {size - 1, size - 50, std::uintmax_t{100}}) {
+        std::filesystem::copy_file(dir / "b.stl", dir / "cut.stl", std::filesystem::copy_options::overwrite_existing);
+        std::filesystem::resize_file(dir / "cut.stl", cut);
+        const std::string e = error_of(dir / "cut.stl");
+        EXPECT_NE(e.find("cut short"), std::string::npos) << cut << ": " << e;
+    }
+    std::filesystem::resize_file(dir / "b.stl", size + 10);
+    EXPECT_NE(error_of(dir / "b.stl").find("bytes after the last facet"), std::string::npos) << error_of(dir / "b.stl");
 }
