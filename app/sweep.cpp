@@ -117,6 +117,16 @@ std::string csv_number(const nlohmann::json& summary, const char* key) {
     return fmt::format("{:.10g}", summary[key].get<double>());
 }
 
+/// "yes" when the run's crater depth is at least one particle spacing, "below one spacing" when it is
+/// shallower (what the run cannot resolve), empty without a crater depth.
+std::string depth_resolved(const nlohmann::json& summary) {
+    if (summary.is_null() || !summary.contains("crater_depth") || !summary["crater_depth"].is_number() ||
+        !summary.contains("particle_spacing") || !summary["particle_spacing"].is_number())
+        return "";
+    return summary["crater_depth"].get<double>() >= summary["particle_spacing"].get<double>() ? "yes"
+                                                                                              : "below one spacing";
+}
+
 }  // namespace
 
 int run_sweep(const SweepOptions& o) {
@@ -194,17 +204,19 @@ int run_sweep(const SweepOptions& o) {
     // sweep.csv: the swept keys, then the results of each run (empty where a run has none).
     const char* results[] = {"crater_depth", "crater_width", "eroded_mass", "damaged_area", "crack_count",
                              "wall_time_s", "abrasive_mass_flow_rate", "grains_injected", "crater_rim_width",
-                             "first_removal_time", "crater_area", "crater_shape_factor"};
+                             "first_removal_time", "crater_area", "crater_shape_factor", "particle_spacing"};
     std::ofstream csv(o.out / "sweep.csv");
     for (const auto& p : o.parameters) csv << p.key << ',';
     for (const char* r : results) csv << r << ',';
-    csv << "status,folder\n";
+    // A crater shallower than one particle spacing is below what the run resolves: say so beside it.
+    csv << "crater_depth_resolved,status,folder\n";
     int incomplete = 0;
     for (const auto& point : points) {
         const auto name = sweep_run_name(o.parameters, point);
         const auto summary = finished_summary(o.out / name);
         for (const auto& v : point) csv << v << ',';
         for (const char* r : results) csv << csv_number(summary, r) << ',';
+        csv << depth_resolved(summary) << ',';
         if (summary.is_null()) ++incomplete;
         csv << (summary.is_null() ? "incomplete" : "completed") << ',' << name << '\n';
     }

@@ -912,6 +912,8 @@ grit sweep "$AWJ" --param jet.pressure=1.5e8,2.5e8 --set time.end=4e-6 --set out
     --jobs 2 --threads 2 --out "$SWEEP"
 rows=$(grep -c ',completed,' "$SWEEP/sweep.csv" 2>/dev/null || true)
 if [[ $RC -eq 0 && $rows -eq 2 ]] && head -1 "$SWEEP/sweep.csv" | grep -q '^jet.pressure,crater_depth,crater_width,eroded_mass,' &&
+    head -1 "$SWEEP/sweep.csv" | grep -q ',particle_spacing,crater_depth_resolved,status,folder$' &&
+    [[ $(grep -c ',below one spacing,completed,' "$SWEEP/sweep.csv") -eq 2 ]] &&
     [[ -f "$SWEEP/jet.pressure=2.5e8/summary.json" ]]; then
     pass "sweep: two runs, sweep.csv with the swept key and the results"
 else
