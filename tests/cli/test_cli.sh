@@ -212,6 +212,8 @@ expect_input_error "negative --end-time" "--end-time" "must not be negative" -- 
 expect_input_error "--set without '='" "--set 'time.end'" "key.path=value" -- run "$HYDRO" --set time.end
 expect_input_error "a bad --set that --end-time replaces" "time.end" "must not be negative" -- \
     run "$HYDRO" --set time.end=-1 --end-time 0
+expect_input_error "particles beyond the machine's memory" "numerics.particle_spacing" "more than this machine's" -- \
+    run "$ROOT/cases/dambreak_3d/case.toml" --set numerics.particle_spacing=0.0004 --set numerics.max_particles=1000000000
 
 # STL mesh walls: a file that cannot be trusted is refused with its name and the problem.
 WEAR=$ROOT/cases/wear_angle_sweep_3d/case.toml

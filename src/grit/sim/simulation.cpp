@@ -807,7 +807,10 @@ RunSummary Simulation<Dim>::run() {
         const double free_bytes =
             options_.write_files ? static_cast<double>(std::filesystem::space(options_.output_dir, no_space).available)
                                  : -1.0;
-        for (const std::string& warning : plan.warnings(spec_, no_space ? -1.0 : free_bytes)) {
+        const MachineMemory memory = machine_memory();
+        // A run that cannot fit this machine stops here, not hours in with the kernel's out-of-memory kill.
+        if (const std::string why = plan.does_not_fit(spec_, memory.total); !why.empty()) throw core::InputError(why);
+        for (const std::string& warning : plan.warnings(spec_, no_space ? -1.0 : free_bytes, memory.available)) {
             if (!options_.quiet) fmt::print(stderr, "{}\n", warning);
             if (log) log->warn(warning);
         }
