@@ -344,17 +344,23 @@ def finish_profiles(curves, summary, plots, xlabel="x [mm]", title="crater profi
         hi = max(float(np.nanmax(x)) for _, x, _ in curves)
         ax.set_xlim(lo * 1e3, hi * 1e3)
     else:
-        deepest = -min(float(np.nanmin(s)) for _, _, s in curves)
-        scale, unit = crater_scale(max(deepest, max(float(np.nanmax(np.abs(s))) for _, _, s in curves)))
-        for time, x, surface in curves:
-            ax.plot(x * 1e3, surface * scale, label=f"t = {time_text(time, t_end)}")
-        ax.axhline(0.0, color="0.3", lw=0.6)
-        if dx:
-            spacing_line(ax, dx, scale, -1.0, deepest, what="deepest")
-        ax.set_ylabel(f"surface \u2212 original surface [{unit}]")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7.5, loc="lower right")
+        profile_curves(ax, curves, [f"t = {time_text(time, t_end)}" for time, _, _ in curves], dx)
     save(fig, plots / "crater_profile.png")
+
+
+def profile_curves(ax, curves, labels, dx):
+    """The surfaces of `curves` (time, position [m], surface change [m]) against position in mm, one
+    label each, with the original surface and one particle spacing `dx` below the deepest point."""
+    deepest = -min(float(np.nanmin(s)) for _, _, s in curves)
+    scale, unit = crater_scale(max(deepest, max(float(np.nanmax(np.abs(s))) for _, _, s in curves)))
+    for (_, position, surface), label in zip(curves, labels):
+        ax.plot(position * 1e3, surface * scale, label=label)
+    ax.axhline(0.0, color="0.3", lw=0.6)
+    if dx:
+        spacing_line(ax, dx, scale, -1.0, deepest, what="deepest")
+    ax.set_ylabel(f"surface \u2212 original surface [{unit}]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=7.5, loc="lower right")
 
 
 def crater_sections_3d(data, times, picks, region, summary, plots):
@@ -401,16 +407,8 @@ def finish_sections(curves, where, summary, plots):
     if flat(np.concatenate([s for _, _, s in curves]), dx):
         say(ax, f"no crater yet by t = {time_text(t_end)}", "the surface is where it started at every output drawn")
     else:
-        deepest = -min(float(np.nanmin(s)) for _, _, s in curves)
-        scale, unit = crater_scale(max(deepest, max(float(np.nanmax(np.abs(s))) for _, _, s in curves)))
-        for (time, y, surface), x in zip(curves, where):
-            ax.plot(y * 1e3, surface * scale, label=f"t = {time_text(time, t_end)}, x = {x * 1e3:.2f} mm")
-        ax.axhline(0.0, color="0.3", lw=0.6)
-        if dx:
-            spacing_line(ax, dx, scale, -1.0, deepest, what="deepest")
-        ax.set_ylabel(f"surface \u2212 original surface [{unit}]")
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7.5, loc="lower right")
+        labels = [f"t = {time_text(time, t_end)}, x = {x * 1e3:.2f} mm" for (time, _, _), x in zip(curves, where)]
+        profile_curves(ax, curves, labels, dx)
     save(fig, plots / "crater_profile.png")
 
 
