@@ -1,4 +1,4 @@
-// DEM throughput: the settling benchmark of shared/anchors/liggghts/in.dem_settle (Hertz-Mindlin with
+// DEM throughput: the settling benchmark of bench/peers/liggghts/in.dem_settle (Hertz-Mindlin with
 // tangential history, periodic x and y, a plane at z = 0), reproduced grain for grain (dem_settle.hpp),
 // at 10,800 (30 x 30 x 12) and 50,000 (50 x 50 x 20) grains, 1 and 2 threads. One iteration runs the
 // whole settling from the lattice, GRIT_DEM_STEPS steps of 1e-5 s (default 10000, as the LIGGGHTS

@@ -2,7 +2,7 @@
 // at ~50k, 200k and 1M fluid particles, at 1 and 2 threads (the scaling table of docs/performance.md).
 // Counters: particle-steps per second (all particles, walls included, as
 // the peers count them) and pair interactions per second (neighbour-list entries per second).
-// The set-up matches shared/anchors/liggghts/in.sph_dambreak2d: column 0.2 x 0.4 m, c0 = 30 m/s,
+// The set-up matches bench/peers/liggghts/in.sph_dambreak2d: column 0.2 x 0.4 m, c0 = 30 m/s,
 // tank 0.8 m long with walls up to 0.45 m, the first steps of the collapse from rest.
 #include <benchmark/benchmark.h>
 

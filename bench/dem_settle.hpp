@@ -1,4 +1,4 @@
-// The DEM settling set-up of shared/anchors/liggghts/in.dem_settle, reproduced grain for grain:
+// The DEM settling set-up of bench/peers/liggghts/in.dem_settle, reproduced grain for grain:
 // d = 3 mm spheres (rho 2500, E 5 MPa, nu 0.45, e 0.3, mu 0.5) on a simple-cubic lattice of spacing
 // s = 1.1 d in a box periodic in x and y (L = nxy s), layers k s for k = 1..nz, each grain moved in x
 // and y by LAMMPS' `displace_atoms random 0.0003 0.0003 0.0 15485863` (the same numbers: the Park-Miller

@@ -4,7 +4,7 @@
 Usage: /usr/bin/python3 compare_liggghts.py GRIT_OUTPUT_DIR LIGGGHTS_MESH.vtk [--bins N] [--plot FILE.png]
 
 GRIT_OUTPUT_DIR: the output folder of `grit run cases/chute_wear_3d/case.toml` (its last walls/*.vtu).
-LIGGGHTS_MESH.vtk: the last `dump mesh/gran/VTK ... wear` file of ../shared/anchors/liggghts/in.chute_wear
+LIGGGHTS_MESH.vtk: the last `dump mesh/gran/VTK ... wear` file of LIGGGHTS' chute_wear tutorial (bench/peers/README.md)
 (post/mesh_100000.vtk), whose per-triangle `wear` is the removed mass per area [kg/m^2].
 Prints the wear per area along the chute (triangles binned by their centroid's x, the downhill axis),
 both totals and the correlation of the binned profiles. Needs python3-vtk9 and python3-numpy.
