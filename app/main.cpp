@@ -157,6 +157,19 @@ int plot_command(const std::string& folder) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
+/// The stages of one step as `grit check --pipeline` prints them: hook point, stage, module, and "prime"
+/// for the stages that also run once before the first step.
+void print_pipeline(const std::vector<grit::sim::StageInfo>& stages) {
+    fmt::print("pipeline ({} stages, in the order one step runs them):\n", stages.size());
+    auto line = [](std::string text) {
+        text.erase(text.find_last_not_of(' ') + 1);
+        fmt::print("{}\n", text);
+    };
+    line(fmt::format("  {:<11} {:<28} {:<16} {}", "hook", "stage", "module", "prime"));
+    for (const auto& s : stages)
+        line(fmt::format("  {:<11} {:<28} {:<16} {}", grit::sim::hook_name(s.hook), s.name, s.module, s.prime ? "yes" : ""));
+}
+
 /// --threads N: a positive whole number (checked here: CLI11's range check prints a 300-digit bound).
 int parse_threads(const std::string& text) {
     int n = 0;
@@ -285,6 +298,9 @@ int main(int argc, char** argv) {
     auto* check = app.add_subcommand("check", "validate a case file without running it");
     check->add_option("case", case_file, "case file (TOML)")->required();
     check->add_option("--set", sets, "override a case value: key.path=value (repeatable)");
+    bool show_pipeline = false;
+    check->add_flag("--pipeline", show_pipeline,
+                    "also print the stages one step runs, in order, with their hook point and module");
 
     app.add_subcommand("materials", "list the built-in material library");
 
@@ -347,11 +363,20 @@ int main(int argc, char** argv) {
             grit::sim::RunOptions options;
             options.write_files = false;
             // Building the particles and the first step's rates also gives the run's cost.
-            const grit::sim::RunEstimate plan = spec.dimension == 2 ? grit::sim::Simulation<2>(spec, options).estimate()
-                                                                    : grit::sim::Simulation<3>(spec, options).estimate();
+            grit::sim::RunEstimate plan;
+            std::vector<grit::sim::StageInfo> stages;
+            auto examine = [&](auto&& simulation) {
+                plan = simulation.estimate();
+                stages = simulation.pipeline().stages();
+            };
+            if (spec.dimension == 2)
+                examine(grit::sim::Simulation<2>(spec, options));
+            else
+                examine(grit::sim::Simulation<3>(spec, options));
             fmt::print("{}: ok ({}D, {} material(s), {} grain material(s))\n", case_file, spec.dimension,
                        spec.materials.size(), spec.grain_materials.size());
             fmt::print("estimate: {}\n", plan.text());
+            if (show_pipeline) print_pipeline(stages);
             return 0;
         }
         for (const auto& m : grit::material::library()) fmt::print("{}\n", grit::material::describe(m));

@@ -255,6 +255,19 @@ fi
 expect_usage_error "numerics.max_particles = 0" "numerics.max_particles" "must lie in" -- \
     check "$DAM" --set numerics.max_particles=0
 
+# check --pipeline: the stages in step order, each with its module. The half water jet on copper runs the
+# symmetry plane, whose stages close each hook they share with the forces it mirrors.
+grit check "$ROOT/cases/waterjet_copper_2d/half.toml" --pipeline
+stages=$(sed -n '/^pipeline (/,$p' "$W/stdout")
+if [[ $RC -eq 0 ]] && grep -q "^  force  *sph_fluid  *sph  *yes$" <<<"$stages" &&
+   [[ $(grep -c "symmetry_plane" <<<"$stages") -gt 0 ]] &&
+   awk '$1 == "force" { last = $3 } END { exit !(last == "symmetry_plane") }' <<<"$stages" &&
+   [[ $(tail -1 <<<"$stages" | awk '{print $2, $3}') == "time_step simulation" ]]; then
+    pass "check --pipeline: stages in order with their modules, the symmetry plane last at force"
+else
+    fail "check --pipeline: stages in order with their modules" "exit $RC: $stages $(cat "$W/stderr")"
+fi
+
 # --- command-line errors: exit 2, one short line; --help and --version exit 0 ----------------------------
 
 expect_usage_error "--threads -3" "--threads -3" "positive whole number" -- run "$HYDRO" --threads -3

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -211,6 +212,12 @@ struct CouplingSpec {
     double min_porosity = 0.2;         ///< coupling.min_porosity: floor of the fluid particles' eps
 };
 
+/// The base of a spec a module reads from its own case table (io/case_tables.hpp): the module's own type
+/// derives from it, and the module finds it with CaseSpec::module_spec<T>(key).
+struct ModuleSpec {
+    virtual ~ModuleSpec() = default;
+};
+
 struct CaseSpec {
     std::filesystem::path source;  ///< the case file
     std::vector<std::string> overrides;  ///< the --set assignments applied to it, in order
@@ -313,11 +320,20 @@ struct CaseSpec {
     AbrasiveSpec abrasive;
     DemSpec dem;
     CouplingSpec coupling;
+    /// What the modules that read their own case table (io/case_tables.hpp) read, by the table's key.
+    std::map<std::string, std::shared_ptr<const ModuleSpec>> module_specs;
+
+    /// The spec read from table `key`, as the module's type T; null when the case has no such table.
+    template <class T>
+    const T* module_spec(const std::string& key) const {
+        const auto it = module_specs.find(key);
+        return it == module_specs.end() ? nullptr : dynamic_cast<const T*>(it->second.get());
+    }
     bool has_sph() const { return !fluids.empty() || !solids.empty() || !inlets.empty() || !walls.empty(); }
-    /// Grains at the start ([[grains]]) or fed during the run ([abrasive]).
     bool has_thin_walls() const {
         return std::any_of(walls.begin(), walls.end(), [](const BlockSpec& w) { return w.shape.thin; });
     }
+    /// Grains at the start ([[grains]]) or fed during the run ([abrasive], [[grain_feed]]).
     bool has_grains() const { return !grains.empty() || abrasive.enabled || !grain_feeds.empty(); }
     /// The material of the first grains: the first [[grains]] block's, else the abrasive's.
     int first_grain_material() const {

@@ -8,4 +8,8 @@ set(GRIT_IO_SOURCES
   io/particle_budget.cpp
   io/run_folder.cpp
   io/durable_file.cpp
+  io/case_section.cpp
+  io/material_tables.cpp
+  io/shape_reader.cpp
+  io/case_tables.cpp
 )

@@ -2,6 +2,7 @@
 #include "grit/sim/particle_blocks.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "grit/modules/thin_walls.hpp"
 #include "grit/sim/geometry.hpp"
 #include "grit/sim/initial_velocity.hpp"
+#include "grit/sim/named_snapshot.hpp"
 
 namespace grit::sim {
 
@@ -71,7 +73,24 @@ void add_particle_blocks(const io::CaseSpec& spec, double dx, particles::SphPart
         add_block(spec, w, Phase::wall, dx, particles);
 }
 
+template <int Dim>
+void check_and_wrap_into_domain(const io::CaseSpec& spec, const neighbors::PeriodicBox<Dim>& box,
+                                particles::SphParticles<Dim>& particles) {
+    auto* x = particles.position();
+    for (Index i = 0; i < particles.size(); ++i)
+        if (!inside<Dim>(x[i], spec.domain_min, spec.domain_max))
+            throw core::InputError(fmt::format(
+                "key 'domain.min'/'domain.max': a {} particle at ({}) lies outside the domain; enlarge the domain",
+                phase_name(particles.phase()[i]), fmt::join(std::vector<double>(x[i].c, x[i].c + Dim), ", ")));
+    if (box.any())
+        for (Index i = 0; i < particles.size(); ++i) x[i] = box.wrap(x[i]);
+}
+
 template void add_particle_blocks<2>(const io::CaseSpec&, double, particles::SphParticles<2>&);
 template void add_particle_blocks<3>(const io::CaseSpec&, double, particles::SphParticles<3>&);
+template void check_and_wrap_into_domain<2>(const io::CaseSpec&, const neighbors::PeriodicBox<2>&,
+                                            particles::SphParticles<2>&);
+template void check_and_wrap_into_domain<3>(const io::CaseSpec&, const neighbors::PeriodicBox<3>&,
+                                            particles::SphParticles<3>&);
 
 }  // namespace grit::sim

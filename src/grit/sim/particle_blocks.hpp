@@ -2,6 +2,7 @@
 #pragma once
 
 #include "grit/io/case_spec.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
 
 namespace grit::sim {
@@ -14,7 +15,18 @@ namespace grit::sim {
 template <int Dim>
 void add_particle_blocks(const io::CaseSpec& spec, double dx, particles::SphParticles<Dim>& particles);
 
+/// Checks that every particle lies inside domain.min/domain.max (throws core::InputError naming the first
+/// that does not), then wraps them along the periodic axes of `box` into [min, max) (a point on max is
+/// the one on min).
+template <int Dim>
+void check_and_wrap_into_domain(const io::CaseSpec& spec, const neighbors::PeriodicBox<Dim>& box,
+                                particles::SphParticles<Dim>& particles);
+
 extern template void add_particle_blocks<2>(const io::CaseSpec&, double, particles::SphParticles<2>&);
 extern template void add_particle_blocks<3>(const io::CaseSpec&, double, particles::SphParticles<3>&);
+extern template void check_and_wrap_into_domain<2>(const io::CaseSpec&, const neighbors::PeriodicBox<2>&,
+                                                   particles::SphParticles<2>&);
+extern template void check_and_wrap_into_domain<3>(const io::CaseSpec&, const neighbors::PeriodicBox<3>&,
+                                                   particles::SphParticles<3>&);
 
 }  // namespace grit::sim

@@ -27,14 +27,47 @@ enum class Hook {
     check,       ///< health check and the next time step (the Simulation's own)
 };
 
+/// The name of a hook point, as `grit check --pipeline` prints it.
+inline const char* hook_name(Hook h) {
+    switch (h) {
+        case Hook::begin_step: return "begin_step";
+        case Hook::boundaries: return "boundaries";
+        case Hook::neighbors: return "neighbors";
+        case Hook::pressure: return "pressure";
+        case Hook::pre_force: return "pre_force";
+        case Hook::force: return "force";
+        case Hook::post_force: return "post_force";
+        case Hook::integrate: return "integrate";
+        case Hook::end_step: return "end_step";
+        case Hook::check: return "check";
+    }
+    return "unknown";
+}
+
+/// One stage as installed: where it runs, its name, the module that installed it, and whether it primes.
+struct StageInfo {
+    Hook hook;
+    std::string name;
+    std::string module;
+    bool prime;
+};
+
 class Pipeline {
 public:
+    /// The module whose stages the next add() calls install (the Simulation sets it around each install()).
+    void set_installer(std::string module) { installer_ = std::move(module); }
     /// Adds a stage at `hook`, after the stages already there. `prime`: it also runs before the first
     /// step to compute the rates of the initial state (pressures and forces, the first time step).
     void add(Hook hook, std::string name, std::function<void()> run, bool prime = false) {
         if (has(name)) throw std::logic_error("stage '" + name + "' installed twice");
         auto it = std::find_if(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.hook > hook; });
-        stages_.insert(it, {{std::move(name), 0.0, 0}, hook, prime, std::move(run)});
+        Stage stage;
+        stage.timer.name = std::move(name);
+        stage.hook = hook;
+        stage.prime = prime;
+        stage.module = installer_;
+        stage.run = std::move(run);
+        stages_.insert(it, std::move(stage));
     }
     bool has(const std::string& name) const {
         return std::any_of(stages_.begin(), stages_.end(), [&](const Stage& s) { return s.timer.name == name; });
@@ -53,6 +86,12 @@ public:
         for (const auto& s : stages_) out.push_back(s.timer);
         return out;
     }
+    /// Every stage in the order a step runs them.
+    std::vector<StageInfo> stages() const {
+        std::vector<StageInfo> out;
+        for (const auto& s : stages_) out.push_back({s.hook, s.timer.name, s.module, s.prime});
+        return out;
+    }
     std::vector<std::string> names() const {
         std::vector<std::string> out;
         for (const auto& s : stages_) out.push_back(s.timer.name);
@@ -62,8 +101,9 @@ public:
 private:
     struct Stage {
         core::TimerEntry timer;
-        Hook hook;
-        bool prime;
+        Hook hook = Hook::begin_step;
+        bool prime = false;
+        std::string module;
         std::function<void()> run;
     };
     static void run_stage(Stage& s) {
@@ -73,6 +113,7 @@ private:
         ++s.timer.calls;
     }
     std::vector<Stage> stages_;
+    std::string installer_;
 };
 
 }  // namespace grit::sim

@@ -1,5 +1,6 @@
 // A run of one case: the run state, the modules the case needs, the step pipeline they install, the run
-// loop with its outputs, the health check and the last-good backup, and checkpoints.
+// loop with its outputs, the health check and the last-good backup, and checkpoints (each part in its own
+// simulation_*.cpp).
 #pragma once
 
 #include <filesystem>
@@ -24,6 +25,8 @@ class ProbesModule;
 }
 
 namespace grit::sim {
+
+class RunLog;
 
 struct RunOptions {
     std::filesystem::path output_dir;
@@ -141,14 +144,20 @@ public:
 
 private:
     void write_checkpoint_file(const std::filesystem::path& file) const;
-    void check_periodic_lengths() const;
     void check_health();
     /// The first particle, grain or module state that is not healthy, described; empty when all are.
     std::string find_unhealthy() const;
     /// Throws core::BlowUpError naming the step, `what` and the last good snapshot (written first).
     [[noreturn]] void report_blow_up(const std::string& what);
+    /// Prints and logs the run's estimate; throws core::InputError when it cannot fit this machine's memory,
+    /// warns when it may not fit the free memory or disk.
+    void check_plan(RunLog* log);
     void compute_time_step();
     void open_output(bool restart);
+    /// The run log (null when no files are written), with what a restart changed.
+    std::unique_ptr<RunLog> open_run_log(bool restart);
+    /// Writes a checkpoint, the state now as a snapshot and the summary, then throws Interrupted.
+    [[noreturn]] void stop_cleanly(const std::string& reason, int signal, RunLog* log);
     void write_output();
     /// The SPH particles of this step to dump/<case>_step_<N>.vtu (RunOptions::dump_from_step).
     void write_dump();
@@ -162,7 +171,7 @@ private:
     RunSetup<Dim> setup_;
     State<Dim> state_;
     std::vector<std::unique_ptr<Module<Dim>>> modules_;
-    modules::ProbesModule<Dim>* probes_ = nullptr;
+    const modules::ProbesModule<Dim>* probes_ = nullptr;
     Pipeline pipeline_;
     bool has_sph_ = true;  ///< false for a grains-only case: no SPH module
     bool primed_ = false;
