@@ -24,7 +24,8 @@ public:
     }
     void initialise() override { count(); }
     void output_values(std::vector<sim::OutputValue>& out) const override {
-        out.push_back(sim::OutputValue::count("tracer_particles", static_cast<double>(count_)).in_unit("1"));
+        out.push_back(sim::OutputValue::count("tracer_particles", static_cast<double>(count_), domain::Combine::sum)
+                          .in_unit("1"));
     }
 
 private:

@@ -26,10 +26,10 @@ void AbrasiveFeedModule<Dim>::feed() {
 template <int Dim>
 void AbrasiveFeedModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const auto& a = setup_.spec.abrasive;
-    out.push_back(sim::OutputValue::count("grains_injected", static_cast<double>(injected_)));
-    out.push_back(sim::OutputValue::real("abrasive_mass_flow_rate", a.mass_flow_rate).summary_only());
-    out.push_back(sim::OutputValue::real("abrasive_spacing", a.spacing).summary_only());
-    out.push_back(sim::OutputValue::real("abrasive_volume_fraction", a.volume_fraction).summary_only());
+    out.push_back(sim::OutputValue::count("grains_injected", static_cast<double>(injected_), domain::Combine::sum));
+    out.push_back(sim::OutputValue::real("abrasive_mass_flow_rate", a.mass_flow_rate, domain::Combine::same).summary_only());
+    out.push_back(sim::OutputValue::real("abrasive_spacing", a.spacing, domain::Combine::same).summary_only());
+    out.push_back(sim::OutputValue::real("abrasive_volume_fraction", a.volume_fraction, domain::Combine::same).summary_only());
 }
 
 template <int Dim>

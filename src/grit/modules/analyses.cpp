@@ -34,13 +34,13 @@ auto crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double sp
 template <int Dim>
 void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const auto c = crater_of(state_, setup_.spec, setup_.spacing);
-    out.push_back(sim::OutputValue::real("crater_depth", c.depth));
-    out.push_back(sim::OutputValue::real("crater_width", c.width));
-    out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width));
-    out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height));
-    out.push_back(sim::OutputValue::real("crater_area", c.area));
-    out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor));
-    if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length));
+    out.push_back(sim::OutputValue::real("crater_depth", c.depth, domain::Combine::whole_set));
+    out.push_back(sim::OutputValue::real("crater_width", c.width, domain::Combine::whole_set));
+    out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width, domain::Combine::whole_set));
+    out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height, domain::Combine::whole_set));
+    out.push_back(sim::OutputValue::real("crater_area", c.area, domain::Combine::whole_set));
+    out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor, domain::Combine::whole_set));
+    if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length, domain::Combine::whole_set));
 }
 
 template <int Dim>
@@ -109,15 +109,15 @@ void CracksModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
     const auto m = analysis::analyse_cracks(
         state_.particles, state_.particles.fields().template get<double>("damage").data(),
         {spec.crack_damage_threshold, spec.crack_link_distance, spec.crack_min_particles});
-    out.push_back(sim::OutputValue::real("damaged_area", m.damaged_area));
-    out.push_back(sim::OutputValue::count("crack_count", static_cast<double>(m.crack_count)));
+    out.push_back(sim::OutputValue::real("damaged_area", m.damaged_area, domain::Combine::sum));
+    out.push_back(sim::OutputValue::count("crack_count", static_cast<double>(m.crack_count), domain::Combine::whole_set));
 }
 
 template <int Dim>
 void FluidInSolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const double reach = std::visit([](const auto& k) { return k.support(); }, setup_.kernel);
     const auto n = analysis::count_fluid_in_solids(state_.particles, reach, setup_.periodic_box);
-    out.push_back(sim::OutputValue::count("fluid_in_solid", static_cast<double>(n)));
+    out.push_back(sim::OutputValue::count("fluid_in_solid", static_cast<double>(n), domain::Combine::sum));
 }
 
 template <int Dim>
@@ -135,7 +135,7 @@ void ProbesModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
                            : p.quantity == "density"  ? "kg/m^3"
                            : p.quantity == "velocity" ? "m/s"
                                                       : "-";
-        out.push_back(sim::OutputValue::real(p.name, value(k)).in_group("probes").in_unit(unit));
+        out.push_back(sim::OutputValue::real(p.name, value(k), domain::Combine::whole_set).in_group("probes").in_unit(unit));
     }
 }
 

@@ -150,7 +150,7 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
     const double min_eps = parallel::reduce(
         ps.size(), 1.0, [&](Index a) { return phase[a] == fluid && porosity[a] > 0.0 ? porosity[a] : 1.0; },
         [](double x, double y) { return std::min(x, y); });
-    out.push_back(OutputValue::real("min_porosity", min_eps));
+    out.push_back(OutputValue::real("min_porosity", min_eps, domain::Combine::min));
 
     // The grains' mean porosity (eq. 45) over those with fluid around them, and their mass-weighted
     // velocity along gravity: the settling velocity, whose last value is the terminal velocity of a
@@ -164,7 +164,7 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
             eps_count += 1.0;
         }
     out.push_back(OutputValue::real("grain_porosity", eps_count > 0.0 ? eps_sum / eps_count
-                                                                      : std::numeric_limits<double>::quiet_NaN()));
+                                                                      : std::numeric_limits<double>::quiet_NaN(), domain::Combine::whole_set));
     const double g = core::norm(gravity_);
     const core::Vec<Dim> down = g > 0.0 ? gravity_ * (1.0 / g) : core::Vec<Dim>::zero();
     double speed = 0.0, settling = 0.0, grain_mass = 0.0;  // mass-weighted sums
@@ -174,14 +174,14 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
         settling += m * core::dot(grains.velocity()[i], down);
         grain_mass += m;
     }
-    out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0).series_only());
+    out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0, domain::Combine::whole_set).series_only());
     // A column whether or not grains are there yet (a feed that starts later, grains that all left).
     const double settling_velocity = grain_mass > 0.0 ? settling / grain_mass : std::numeric_limits<double>::quiet_NaN();
-    if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity).series_only());
+    if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity, domain::Combine::whole_set).series_only());
     if (g > 0.0 && grain_mass > 0.0)
-        out.push_back(OutputValue::real("terminal_velocity", settling_velocity).summary_only());
-    out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed()).summary_only());
-    out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count())).series_only());
+        out.push_back(OutputValue::real("terminal_velocity", settling_velocity, domain::Combine::whole_set).summary_only());
+    out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed(), domain::Combine::whole_set).summary_only());
+    out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count()), domain::Combine::sum).series_only());
     bed_values(out);
 }
 
@@ -238,9 +238,9 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
         volume += v;
     }
     const double eps = 1.0 - solid / bed_volume;
-    out.push_back(OutputValue::real("superficial_velocity", volume > 0.0 ? flux / volume : 0.0));
-    out.push_back(OutputValue::real("pressure_gradient", force / (eps * bed_volume)));
-    out.push_back(OutputValue::real("bed_porosity", eps));
+    out.push_back(OutputValue::real("superficial_velocity", volume > 0.0 ? flux / volume : 0.0, domain::Combine::whole_set));
+    out.push_back(OutputValue::real("pressure_gradient", force / (eps * bed_volume), domain::Combine::whole_set));
+    out.push_back(OutputValue::real("bed_porosity", eps, domain::Combine::whole_set));
 }
 
 template class CouplingModule<2>;

@@ -92,8 +92,8 @@ void GrainFeedModule<Dim>::output_values(std::vector<sim::OutputValue>& out) con
     std::int64_t fed = 0;
     for (const auto n : fed_)
         fed += n;
-    out.push_back(sim::OutputValue::count("grains_fed", static_cast<double>(fed)));
-    out.push_back(sim::OutputValue::count("grains_not_placed", static_cast<double>(not_placed_)).summary_only());
+    out.push_back(sim::OutputValue::count("grains_fed", static_cast<double>(fed), domain::Combine::sum));
+    out.push_back(sim::OutputValue::count("grains_not_placed", static_cast<double>(not_placed_), domain::Combine::sum).summary_only());
 }
 
 template <int Dim>

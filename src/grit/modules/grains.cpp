@@ -194,19 +194,19 @@ std::string GrainsModule<Dim>::check_health() const {
 
 template <int Dim>
 void GrainsModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    out.push_back(sim::OutputValue::count("grains", static_cast<double>(state_.grains->grains().size())));
-    out.push_back(sim::OutputValue::real("grain_kinetic_energy", state_.grains->kinetic_energy()));
+    out.push_back(sim::OutputValue::count("grains", static_cast<double>(state_.grains->grains().size()), domain::Combine::sum));
+    out.push_back(sim::OutputValue::real("grain_kinetic_energy", state_.grains->kinetic_energy(), domain::Combine::sum));
     if (setup_.spec.remove_leaving || !setup_.spec.outlets.empty()) {
-        out.push_back(sim::OutputValue::count("grains_out", static_cast<double>(grains_out_)));
-        out.push_back(sim::OutputValue::real("grain_mass_out", grain_mass_out_).summary_only());
+        out.push_back(sim::OutputValue::count("grains_out", static_cast<double>(grains_out_), domain::Combine::sum));
+        out.push_back(sim::OutputValue::real("grain_mass_out", grain_mass_out_, domain::Combine::sum).summary_only());
     }
-    out.push_back(sim::OutputValue::count("impacts", static_cast<double>(state_.impacts.total())).summary_only());
+    out.push_back(sim::OutputValue::count("impacts", static_cast<double>(state_.impacts.total()), domain::Combine::sum).summary_only());
     // Grain-grain collisions begun, each grain's counted (two free grains meeting count two), those of
     // the grains that have left included: the deflections Fig. 14 credits with an AWJ crater's widening.
     const auto& grains = state_.grains->grains();
     std::int64_t collisions = grain_collisions_out_;
     for (Index g = 0; g < grains.size(); ++g) collisions += grains.collisions()[g];
-    out.push_back(sim::OutputValue::count("grain_collisions", static_cast<double>(collisions)));
+    out.push_back(sim::OutputValue::count("grain_collisions", static_cast<double>(collisions), domain::Combine::sum));
 }
 
 template <int Dim>

@@ -291,12 +291,12 @@ std::string IsphModule<Dim>::check_health() const {
 
 template <int Dim>
 void IsphModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    out.push_back(sim::OutputValue::count("pressure_iterations", last_.iterations));
-    out.push_back(sim::OutputValue::real("pressure_residual", last_.residual));
-    out.push_back(sim::OutputValue::count("free_surface_particles", static_cast<double>(last_.surface_particles)));
-    out.push_back(sim::OutputValue::count("pressure_restarts", static_cast<double>(restarts_)).summary_only());
+    out.push_back(sim::OutputValue::count("pressure_iterations", last_.iterations, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("pressure_residual", last_.residual, domain::Combine::same));
+    out.push_back(sim::OutputValue::count("free_surface_particles", static_cast<double>(last_.surface_particles), domain::Combine::sum));
+    out.push_back(sim::OutputValue::count("pressure_restarts", static_cast<double>(restarts_), domain::Combine::same).summary_only());
     out.push_back(sim::OutputValue::real("pressure_iterations_mean",
-                                         solves_ > 0 ? iterations_total_ / static_cast<double>(solves_) : 0.0)
+                                         solves_ > 0 ? iterations_total_ / static_cast<double>(solves_) : 0.0, domain::Combine::same)
                       .summary_only());
 }
 

@@ -82,11 +82,11 @@ void MeshWearModule<Dim>::book() {
 
 template <int Dim>
 void MeshWearModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    out.push_back(sim::OutputValue::real("wear_mass_total", map_.total_mass(0, map_.size())));
+    out.push_back(sim::OutputValue::real("wear_mass_total", map_.total_mass(0, map_.size()), domain::Combine::sum));
     const auto& meshes = setup_.spec.meshes;
     for (std::size_t m = 0; m < meshes.size(); ++m)
         out.push_back(sim::OutputValue::real("wear_mass_" + meshes[m].name,
-                                             map_.total_mass(first_triangle_[m], first_triangle_[m + 1])));
+                                             map_.total_mass(first_triangle_[m], first_triangle_[m + 1]), domain::Combine::sum));
 }
 
 template <int Dim>

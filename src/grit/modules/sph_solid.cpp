@@ -292,11 +292,11 @@ void SolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const double internal = parallel::sum(ps.size(), 0.0, [&](Index i) {
         return ph[i] == solid && !ps.is_image(i) ? m[i] * e[i] : 0.0;
     });
-    out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded));
+    out.push_back(sim::OutputValue::real("eroded_mass", state_.ledger.eroded, domain::Combine::sum));
     // When the solid first lost mass (failure or an outlet): the end of Fig. 13's Stage One [s].
-    out.push_back(sim::OutputValue::real("first_removal_time", state_.erosion.first_time()).summary_only());
-    out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps));
-    out.push_back(sim::OutputValue::real("internal_energy", internal));  // sum of m e over solids [J]
+    out.push_back(sim::OutputValue::real("first_removal_time", state_.erosion.first_time(), domain::Combine::min).summary_only());
+    out.push_back(sim::OutputValue::real("max_plastic_strain", max_eps, domain::Combine::max));
+    out.push_back(sim::OutputValue::real("internal_energy", internal, domain::Combine::sum));  // sum of m e over solids [J]
 }
 
 template <int Dim>

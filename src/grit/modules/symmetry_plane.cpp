@@ -124,6 +124,9 @@ void SymmetryPlaneModule<Dim>::find_sources() {
         find_sources();
         return;
     }
+    halo_.clear();
+    for (std::size_t k = 0; k < images_.size(); ++k)
+        halo_.add(sources_[k], images_[k], domain::GhostTransform<Dim>::mirror(axis));
     sources_generation_ = ps.generation();
 }
 
@@ -141,7 +144,7 @@ void SymmetryPlaneModule<Dim>::refresh() {
             if (x[i][axis] < 0.0 && ph[i] != wall && !ps.is_image(i)) fields.mirror_copy(i, i, axis);
     }
     find_sources();
-    ps.fields().mirror_copy(sources_, images_, axis);
+    halo_.forward(ps.fields(), ps.position());
     std::int32_t* id = ps.id();
     for (std::size_t k = 0; k < images_.size(); ++k) id[images_[k]] = Particles<Dim>::image_id(id[sources_[k]]);
 }
@@ -187,11 +190,9 @@ void SymmetryPlaneModule<Dim>::return_image_forces() {
     if (sources_generation_ != ps.generation() || held_.size() != images_.size())
         throw std::logic_error("symmetry plane: the particle set changed between the sums and the grain forces");
     auto* a = ps.acceleration();
-    for (std::size_t k = 0; k < images_.size(); ++k) {
-        core::Vec<Dim> added = a[images_[k]] - held_[k];
-        added[axis] = -added[axis];
-        a[sources_[k]] += added;
-    }
+    std::vector<core::Vec<Dim>> added(images_.size());
+    for (std::size_t k = 0; k < images_.size(); ++k) added[k] = a[images_[k]] - held_[k];
+    halo_.reverse_add(added.data(), a);
 }
 
 template class SymmetryPlaneModule<2>;

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+#include "grit/domain/halo.hpp"
 #include "grit/sim/module.hpp"
 
 namespace grit::modules {
@@ -52,6 +53,8 @@ private:
     sim::State<Dim>& state_;
     double depth_ = 0.0;  ///< images of the particles closer than this to the plane [m]
     std::vector<Index> images_, sources_;
+    /// Each image as the mirror ghost of its source: refreshed forward, what grains add returned in reverse.
+    domain::Halo<Dim> halo_;
     std::vector<core::Vec<Dim>> held_;
     std::uint64_t sources_generation_ = ~std::uint64_t{0};
 };

@@ -77,7 +77,7 @@ void ThinWallsModule<Dim>::output_values(std::vector<sim::OutputValue>& out) con
     const Index near = parallel::reduce(
         ps.size(), Index{0}, [&](Index i) -> Index { return phase[i] == fluid && core::norm2(normal[i]) > 0.0; },
         [](Index a, Index b) { return a + b; });
-    out.push_back(sim::OutputValue::count("fluid_near_thin_walls", static_cast<double>(near)).summary_only());
+    out.push_back(sim::OutputValue::count("fluid_near_thin_walls", static_cast<double>(near), domain::Combine::sum).summary_only());
 }
 
 template class ThinWallsModule<2>;

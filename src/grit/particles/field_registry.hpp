@@ -47,6 +47,8 @@ public:
     virtual void mirror_copy(Index from, Index to, int axis) = 0;
     /// The same for each pair (from[k], to[k]).
     virtual void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) = 0;
+    /// Entry to[k] becomes a copy of entry from[k], for each k (a periodic ghost of its owner).
+    virtual void copy(const std::vector<Index>& from, const std::vector<Index>& to) = 0;
     /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
     /// `phase` and `material` (the particles' phases and material indices, or null) apply the output
     /// scope: a real-valued column is written as NaN on the particles it means nothing for.
@@ -100,6 +102,10 @@ public:
     void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) override {
         for (std::size_t k = 0; k < from.size(); ++k)
             values_[static_cast<std::size_t>(to[k])] = mirrored(values_[static_cast<std::size_t>(from[k])], axis);
+    }
+    void copy(const std::vector<Index>& from, const std::vector<Index>& to) override {
+        for (std::size_t k = 0; k < from.size(); ++k)
+            values_[static_cast<std::size_t>(to[k])] = values_[static_cast<std::size_t>(from[k])];
     }
     void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
                        const std::int32_t* material = nullptr) const override;
@@ -260,6 +266,10 @@ public:
     }
     void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) {
         for (auto& f : fields_) f->mirror_copy(from, to, axis);
+    }
+    /// Entry to[k] of every field becomes a copy of entry from[k] (FieldBase::copy).
+    void copy(const std::vector<Index>& from, const std::vector<Index>& to) {
+        for (auto& f : fields_) f->copy(from, to);
     }
     void gather(const std::vector<Index>& source) {
         for (auto& f : fields_) f->gather(source);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/domain/comm.hpp"
 #include "grit/io/case_spec.hpp"
 #include "grit/io/hdf5_file.hpp"
 #include "grit/neighbors/periodic_box.hpp"
@@ -20,19 +21,25 @@
 
 namespace grit::sim {
 
-/// One output value: a column of series.csv and/or a key of summary.json, e.g.
-/// `OutputValue::real("eroded_mass", m)`, `OutputValue::count("grains", n).summary_only()`.
+/// One output value: a column of series.csv and/or a key of summary.json, with how the values of several
+/// sub-domains combine into it, e.g. `OutputValue::real("eroded_mass", m, Combine::sum)`,
+/// `OutputValue::count("grains", n, Combine::sum).summary_only()`.
 struct OutputValue {
     std::string name;
     double value = 0.0;
+    domain::Combine combine = domain::Combine::whole_set;
     bool integer = false;    ///< written to summary.json as a whole number
     bool in_series = true;   ///< a series.csv column
     bool in_summary = true;  ///< a summary.json key
     std::string group;       ///< summary.json: under this object (e.g. "probes"); empty: top level
     std::string unit;        ///< summary.json's "units"; empty: sim/output_units.cpp's table names it
 
-    static OutputValue real(std::string name, double value) { return {std::move(name), value, false, true, true, {}, {}}; }
-    static OutputValue count(std::string name, double value) { return {std::move(name), value, true, true, true, {}, {}}; }
+    static OutputValue real(std::string name, double value, domain::Combine combine) {
+        return {std::move(name), value, combine, false, true, true, {}, {}};
+    }
+    static OutputValue count(std::string name, double value, domain::Combine combine) {
+        return {std::move(name), value, combine, true, true, true, {}, {}};
+    }
     OutputValue series_only() && {
         in_summary = false;
         return std::move(*this);
@@ -73,6 +80,8 @@ struct RunSetup {
     /// The periodic axes of the SPH particles and the grains (domain.periodic); none: any() is false.
     /// Every loop that forms x_a - x_b of two points takes its nearest image along them.
     neighbors::PeriodicBox<Dim> periodic_box;
+    /// The run's reductions across sub-domains (one process: domain::SerialComm).
+    const domain::Comm& comm;
 };
 
 /// Where output files go (only when files are written).

@@ -33,7 +33,7 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
       options_(std::move(options)),
       kernel_(sph::CubicSpline<Dim>(1.0)),
       setup_{spec_,   spec_.particle_spacing, spec_.smoothing_ratio * spec_.particle_spacing, kernel_, 0.0,
-             periodic_box_of<Dim>(spec_)} {
+             periodic_box_of<Dim>(spec_), comm_} {
     if (spec_.dimension != Dim) throw std::logic_error("case dimension does not match the simulation");
     sph::make_kernel<Dim>(spec_.kernel, setup_.smoothing_length, kernel_);
     double fastest = 0.0;
@@ -75,7 +75,7 @@ void Simulation<Dim>::compute_time_step() {
     double dt = std::numeric_limits<double>::max();
     for (const auto& m : modules_) dt = std::min(dt, m->stable_time_step());
     auto& clock = state_.clock;
-    clock.dt = std::min(dt, spec_.max_time_step);
+    clock.dt = std::min(comm_.min(dt), spec_.max_time_step);  // one step for every sub-domain
     clock.dt_stable = clock.dt;
     if (!(clock.dt < std::numeric_limits<double>::max()))
         throw core::InputError("nothing sets a time step: the case has no particles that move");

@@ -168,6 +168,7 @@ private:
     io::CaseSpec spec_;
     RunOptions options_;
     sph::Kernel<Dim> kernel_;
+    domain::SerialComm comm_;
     RunSetup<Dim> setup_;
     State<Dim> state_;
     std::vector<std::unique_ptr<Module<Dim>>> modules_;

@@ -22,20 +22,22 @@ std::vector<OutputValue> Simulation<Dim>::output_values() const {
     const auto d = analysis::compute_diagnostics(state_.particles);
     // time, step and particles have their own summary keys.
     std::vector<OutputValue> out = {
-        OutputValue::real("time", clock.time).series_only(),
-        OutputValue::count("step", static_cast<double>(clock.step)).series_only(),
-        OutputValue::real("dt", clock.dt).series_only(),
-        OutputValue::real("kinetic_energy", d.kinetic_energy),
-        OutputValue::real("mass_total", d.mass),
-        OutputValue::real("mass_in", state_.ledger.in),
-        OutputValue::real("mass_out", state_.ledger.out),
-        OutputValue::real("max_velocity", d.max_velocity),
-        OutputValue::count("particles", static_cast<double>(state_.particles.size() - state_.particles.image_count()))
+        OutputValue::real("time", clock.time, domain::Combine::same).series_only(),
+        OutputValue::count("step", static_cast<double>(clock.step), domain::Combine::same).series_only(),
+        OutputValue::real("dt", clock.dt, domain::Combine::same).series_only(),
+        OutputValue::real("kinetic_energy", d.kinetic_energy, domain::Combine::sum),
+        OutputValue::real("mass_total", d.mass, domain::Combine::sum),
+        OutputValue::real("mass_in", state_.ledger.in, domain::Combine::sum),
+        OutputValue::real("mass_out", state_.ledger.out, domain::Combine::sum),
+        OutputValue::real("max_velocity", d.max_velocity, domain::Combine::max),
+        OutputValue::count("particles", static_cast<double>(state_.particles.size() - state_.particles.image_count()), domain::Combine::sum)
             .series_only(),
     };
     for (const auto& m : modules_) m->output_values(out);
-    for (auto& v : out)
+    for (auto& v : out) {
+        v.value = comm_.combine(v.combine, v.value);  // this sub-domain's value with the others'
         if (v.unit.empty()) v.unit = output_unit(v.name, Dim);
+    }
     return out;
 }
 

@@ -1,0 +1,71 @@
+// The communicator a run's reductions go through: the one time step (min), the rebuild decision (any), and
+// every output value by its combine kind. A run in one process has the serial communicator, rank 0 of 1,
+// whose reductions return their argument; a run over many processes puts its own behind the same calls,
+// so that no module or analysis changes when it does.
+#pragma once
+
+#include <string>
+
+namespace grit::domain {
+
+/// How an output value of one sub-domain combines with the others' into the run's value.
+enum class Combine {
+    same,       ///< every sub-domain holds the same value (time, step, dt, a set-up constant)
+    sum,        ///< a sum over particles or events (mass, energy, counts)
+    min,        ///< a minimum over particles (the smallest porosity)
+    max,        ///< a maximum over particles (the fastest speed, the largest plastic strain)
+    whole_set,  ///< needs the whole set, not a combination of local values (a mean of ratios, the crater's
+                ///< shape from its bins, connected components): gathered before it is computed
+};
+
+/// The name of a combine kind, as documentation and messages write it.
+inline const char* combine_name(Combine c) {
+    switch (c) {
+        case Combine::same: return "same";
+        case Combine::sum: return "sum";
+        case Combine::min: return "min";
+        case Combine::max: return "max";
+        case Combine::whole_set: return "whole_set";
+    }
+    return "unknown";
+}
+
+class Comm {
+public:
+    virtual ~Comm() = default;
+    /// This sub-domain's rank and the number of sub-domains.
+    virtual int rank() const = 0;
+    virtual int size() const = 0;
+    /// Collective reductions over every rank.
+    virtual double min(double value) const = 0;
+    virtual double max(double value) const = 0;
+    virtual double sum(double value) const = 0;
+    /// True on every rank when `value` is true on any (the shared neighbour-list rebuild decision).
+    virtual bool any(bool value) const = 0;
+
+    /// `value` of this rank combined with the others' by `kind`. `same` returns it as it is (every rank
+    /// holds it); `whole_set` values are computed over the gathered set by their module, not here.
+    double combine(Combine kind, double value) const {
+        switch (kind) {
+            case Combine::sum: return sum(value);
+            case Combine::min: return min(value);
+            case Combine::max: return max(value);
+            case Combine::same:
+            case Combine::whole_set: return value;
+        }
+        return value;
+    }
+};
+
+/// One process, one sub-domain: every reduction is the value itself.
+class SerialComm final : public Comm {
+public:
+    int rank() const override { return 0; }
+    int size() const override { return 1; }
+    double min(double value) const override { return value; }
+    double max(double value) const override { return value; }
+    double sum(double value) const override { return value; }
+    bool any(bool value) const override { return value; }
+};
+
+}  // namespace grit::domain

@@ -1,0 +1,58 @@
+// The communicator's reductions and the combine kinds of output values.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "grit/domain/comm.hpp"
+
+namespace grit::domain {
+namespace {
+
+/// Rank 0 of a run whose other ranks hold `others`: the reductions over all of them, as a real
+/// communicator would return them.
+class FixedPeers final : public Comm {
+public:
+    explicit FixedPeers(std::vector<double> others) : others_(std::move(others)) {}
+    int rank() const override { return 0; }
+    int size() const override { return 1 + static_cast<int>(others_.size()); }
+    double min(double v) const override { return std::min(v, *std::min_element(others_.begin(), others_.end())); }
+    double max(double v) const override { return std::max(v, *std::max_element(others_.begin(), others_.end())); }
+    double sum(double v) const override {
+        for (double o : others_) v += o;
+        return v;
+    }
+    bool any(bool v) const override { return v || std::any_of(others_.begin(), others_.end(), [](double o) { return o != 0.0; }); }
+
+private:
+    std::vector<double> others_;
+};
+
+TEST(Comm, SerialIsRankZeroOfOneAndReturnsItsArgument) {
+    const SerialComm comm;
+    EXPECT_EQ(comm.rank(), 0);
+    EXPECT_EQ(comm.size(), 1);
+    EXPECT_EQ(comm.min(2.5), 2.5);
+    EXPECT_EQ(comm.max(-1.0), -1.0);
+    EXPECT_EQ(comm.sum(0.1), 0.1);
+    EXPECT_TRUE(comm.any(true));
+    EXPECT_FALSE(comm.any(false));
+    for (const auto kind : {Combine::same, Combine::sum, Combine::min, Combine::max, Combine::whole_set})
+        EXPECT_EQ(comm.combine(kind, 0.3), 0.3) << combine_name(kind);
+}
+
+TEST(Comm, EachCombineKindReducesAsItsNameSays) {
+    const FixedPeers comm({4.0, -2.0});
+    EXPECT_EQ(comm.size(), 3);
+    EXPECT_EQ(comm.combine(Combine::sum, 1.0), 3.0);
+    EXPECT_EQ(comm.combine(Combine::min, 1.0), -2.0);
+    EXPECT_EQ(comm.combine(Combine::max, 1.0), 4.0);
+    // Held alike by every rank, or computed over the gathered set by its module: left as it is.
+    EXPECT_EQ(comm.combine(Combine::same, 1.0), 1.0);
+    EXPECT_EQ(comm.combine(Combine::whole_set, 1.0), 1.0);
+    EXPECT_TRUE(comm.any(false));  // another rank's list is stale: every rank rebuilds
+    EXPECT_STREQ(combine_name(Combine::whole_set), "whole_set");
+}
+
+}  // namespace
+}  // namespace grit::domain
