@@ -13,6 +13,7 @@
 #include "grit/analysis/diagnostics.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/mesh/stl_file.hpp"
+#include "grit/modules/probes_table.hpp"
 #include "grit/sim/simulation.hpp"
 
 namespace grit::testing {
@@ -55,7 +56,7 @@ io::CaseSpec free_blob_case(std::vector<std::string> overrides) {
                      "physics.gravity=[" + std::string(Dim == 2 ? "0.0, 0.0" : "0.0, 0.0, 0.0") + "]");
     auto spec = load_case(Dim == 2 ? "hydrostatic_2d/case.toml" : "hydrostatic_3d/case.toml", overrides);
     spec.walls.clear();
-    spec.probes.clear();
+    spec.module_specs.erase(modules::ProbesSpec::key);
     spec.fluids[0].hydrostatic = false;
     spec.fluids[0].shape.kind = "disc";
     spec.fluids[0].shape.center.assign(Dim, 0.1);

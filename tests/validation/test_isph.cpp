@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "grit/core/error.hpp"
+#include "grit/modules/probes_table.hpp"
 #include "support/case_fixture.hpp"
 #include "support/martin_moyce.hpp"
 
@@ -25,24 +26,24 @@ constexpr double rho0 = 1000.0, g = 9.81;
 TEST(Isph, HydrostaticTankPressure) {
     grit::sim::Simulation<2> sim(load_case("hydrostatic_2d/case.toml", {"fluid.solver=isph"}), in_memory());
     const double surface = 0.3;
-    const auto& spec = sim.spec();
-    std::vector<double> mean(spec.probes.size(), 0.0), low(spec.probes.size(), 1e30), high(spec.probes.size(), -1e30);
+    const auto& probes = sim.spec().module_spec<grit::modules::ProbesSpec>(grit::modules::ProbesSpec::key)->probes;
+    std::vector<double> mean(probes.size(), 0.0), low(probes.size(), 1e30), high(probes.size(), -1e30);
     const int samples = 21;
     for (int s = 0; s < samples; ++s) {
         sim.advance_to(0.5 + 0.05 * s);
-        for (std::size_t k = 0; k < spec.probes.size(); ++k) {
+        for (std::size_t k = 0; k < probes.size(); ++k) {
             mean[k] += sim.probe(k) / samples;
             low[k] = std::min(low[k], sim.probe(k));
             high[k] = std::max(high[k], sim.probe(k));
         }
     }
-    for (std::size_t k = 0; k < spec.probes.size(); ++k) {
-        const double depth = surface - spec.probes[k].position[1];
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+        const double depth = surface - probes[k].position[1];
         const double expected = rho0 * g * depth;
         std::printf("ISPH tank: %s mean = %.1f Pa (%+.1f %%), range %+.1f %% .. %+.1f %% of rho g depth = %.1f Pa\n",
-                    spec.probes[k].name.c_str(), mean[k], 100.0 * (mean[k] - expected) / expected,
+                    probes[k].name.c_str(), mean[k], 100.0 * (mean[k] - expected) / expected,
                     100.0 * (low[k] - expected) / expected, 100.0 * (high[k] - expected) / expected, expected);
-        EXPECT_NEAR(mean[k], expected, 0.03 * expected) << spec.probes[k].name << " at depth " << depth;
+        EXPECT_NEAR(mean[k], expected, 0.03 * expected) << probes[k].name << " at depth " << depth;
     }
     // Least-squares line p = c0 + c1 y through the particles below the top 3 cm; the RMS about it.
     auto& ps = sim.particles();

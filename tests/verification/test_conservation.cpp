@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "grit/modules/probes_table.hpp"
 #include "support/case_fixture.hpp"
 
 using grit::testing::in_memory;
@@ -50,7 +51,7 @@ void periodic_box(double length, const std::vector<std::string>& numerics) {
     overrides.insert(overrides.end(), numerics.begin(), numerics.end());
     auto spec = load_case(Dim == 2 ? "hydrostatic_2d/case.toml" : "hydrostatic_3d/case.toml", overrides);
     spec.walls.clear();
-    spec.probes.clear();
+    spec.module_specs.erase(grit::modules::ProbesSpec::key);
     spec.fluids[0].hydrostatic = false;
     spec.fluids[0].shape.min.assign(Dim, 0.0);
     spec.fluids[0].shape.max.assign(Dim, length);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "grit/modules/probes_table.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
 #include "support/validation_figures.hpp"
@@ -18,14 +19,19 @@ namespace {
 
 constexpr double rho0 = 1000.0, g = 9.81;
 
+/// The case's probes ([[probe]], read by the probes module's table).
+const std::vector<grit::analysis::ProbeSpec>& probes_of(const grit::io::CaseSpec& spec) {
+    return spec.module_spec<grit::modules::ProbesSpec>(grit::modules::ProbesSpec::key)->probes;
+}
+
 template <int Dim>
 void check_tank(grit::sim::Simulation<Dim>& sim, double surface, const std::vector<double>& tank_max) {
     const auto& spec = sim.spec();
     double largest = 0.0;  // the largest relative error over the probes, signed
-    for (std::size_t k = 0; k < spec.probes.size(); ++k) {
-        const double depth = surface - spec.probes[k].position[Dim - 1];
+    for (std::size_t k = 0; k < probes_of(spec).size(); ++k) {
+        const double depth = surface - probes_of(spec)[k].position[Dim - 1];
         const double expected = rho0 * g * depth;
-        EXPECT_NEAR(sim.probe(k), expected, 0.05 * expected) << spec.probes[k].name << " at depth " << depth;
+        EXPECT_NEAR(sim.probe(k), expected, 0.05 * expected) << probes_of(spec)[k].name << " at depth " << depth;
         const double error = sim.probe(k) / expected - 1.0;
         if (std::abs(error) > std::abs(largest)) largest = error;
     }
@@ -61,9 +67,9 @@ TEST(Hydrostatic, Tank3D) {
 TEST(Hydrostatic, TankFromAnStlMesh3D) {
     grit::sim::Simulation<3> sim(load_case("hydrostatic_mesh_3d/case.toml", {"time.end=0.3"}), in_memory());
     sim.advance_to(sim.spec().end_time);
-    for (std::size_t k = 0; k < sim.spec().probes.size(); ++k)
-        std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", sim.spec().probes[k].name.c_str(), sim.probe(k),
-                    rho0 * g * (0.2 - sim.spec().probes[k].position[2]));
+    for (std::size_t k = 0; k < probes_of(sim.spec()).size(); ++k)
+        std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", probes_of(sim.spec())[k].name.c_str(), sim.probe(k),
+                    rho0 * g * (0.2 - probes_of(sim.spec())[k].position[2]));
     check_tank<3>(sim, 0.2, {0.2, 0.1, 0.3});
 }
 
@@ -82,10 +88,10 @@ TEST(Hydrostatic, TwoLevelsAcrossAThinMembrane3D) {
     const auto before = sides();
     sim.advance_to(sim.spec().end_time);
     const double surface[3] = {0.1, 0.1, 0.05};  // the probes: two on the left, one on the right
-    for (std::size_t k = 0; k < sim.spec().probes.size(); ++k) {
-        const double expected = rho0 * g * (surface[k] - sim.spec().probes[k].position[2]);
-        std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", sim.spec().probes[k].name.c_str(), sim.probe(k), expected);
-        EXPECT_NEAR(sim.probe(k), expected, 0.05 * expected) << sim.spec().probes[k].name;
+    for (std::size_t k = 0; k < probes_of(sim.spec()).size(); ++k) {
+        const double expected = rho0 * g * (surface[k] - probes_of(sim.spec())[k].position[2]);
+        std::printf("%s: %.1f Pa (rho g depth %.1f Pa)\n", probes_of(sim.spec())[k].name.c_str(), sim.probe(k), expected);
+        EXPECT_NEAR(sim.probe(k), expected, 0.05 * expected) << probes_of(sim.spec())[k].name;
     }
     const auto after = sides();
     EXPECT_EQ(after[0], before[0]) << "particles crossed the membrane";

@@ -23,7 +23,7 @@ struct WeightedSum {
 }  // namespace
 
 template <int Dim>
-double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<Dim>& ps,
+double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& ps,
                       const sph::Kernel<Dim>& kernel, double spacing, const neighbors::PeriodicBox<Dim>& box) {
     using Vec = core::Vec<Dim>;
     const Vec* x = ps.position();
@@ -69,9 +69,9 @@ double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<
     return s.weight > 0.0 ? s.value / s.weight : 0.0;
 }
 
-template double evaluate_probe<2>(const io::ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double,
+template double evaluate_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double,
                                   const neighbors::PeriodicBox<2>&);
-template double evaluate_probe<3>(const io::ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double,
+template double evaluate_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double,
                                   const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

@@ -1,12 +1,28 @@
 // Probes: values sampled at output times and written as columns of series.csv.
 #pragma once
 
-#include "grit/io/case_spec.hpp"
+#include <string>
+#include <vector>
+
 #include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
 #include "grit/sph/kernels.hpp"
 
 namespace grit::analysis {
+
+/// A probe written as a column of series.csv ([[probe]], read by modules/probes_table.cpp).
+struct ProbeSpec {
+    std::string key;
+    std::string name;      ///< column name
+    std::string kind;      ///< "point": Shepard interpolation; "front": furthest particle along an axis
+    int phase = 0;         ///< the phase sampled: 0 fluid (default), 1 solid
+    std::string quantity;  ///< point: "pressure", "density", "velocity"
+    std::vector<double> position;  ///< point [m]
+    int axis = 0;                  ///< front: 0 = x, 1 = y, 2 = z
+    bool has_region = false;       ///< front: only particles inside [min, max]
+    std::vector<double> min, max;
+};
+
 
 /// "point": Shepard-normalised SPH interpolation of the quantity from the fluid particles,
 ///   q(x) = sum_b q_b W(x - x_b) m_b/rho_b / sum_b W(x - x_b) m_b/rho_b (0 where no fluid is in reach);
@@ -14,12 +30,12 @@ namespace grit::analysis {
 ///   spacing (its edge), optionally only among particles inside a region; NaN when there are none.
 /// Along the periodic axes of `box`, a point probe sees the particles across a face (nearest image).
 template <int Dim>
-double evaluate_probe(const io::ProbeSpec& probe, const particles::SphParticles<Dim>& particles,
+double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& particles,
                       const sph::Kernel<Dim>& kernel, double spacing, const neighbors::PeriodicBox<Dim>& box = {});
 
-extern template double evaluate_probe<2>(const io::ProbeSpec&, const particles::SphParticles<2>&,
+extern template double evaluate_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&,
                                          const sph::Kernel<2>&, double, const neighbors::PeriodicBox<2>&);
-extern template double evaluate_probe<3>(const io::ProbeSpec&, const particles::SphParticles<3>&,
+extern template double evaluate_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&,
                                          const sph::Kernel<3>&, double, const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

@@ -383,31 +383,6 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.outlets.push_back(std::move(o));
     }
     if (top.has("jet")) read_jet(top.section("jet"), c, table);
-    std::set<std::string> probe_names;
-    for (const Section& s : top.sections("probe")) {
-        ProbeSpec p;
-        p.key = s.path();
-        p.name = s.text("name");
-        if (p.name.empty() || p.name.find_first_of(", \t\"") != std::string::npos)
-            s.fail("name", "must be a non-empty column name without commas, spaces or quotes");
-        if (!probe_names.insert(p.name).second) s.fail("name", "is used by another probe");
-        p.kind = s.choice("kind", "point", {"point", "front"});
-        p.phase = s.choice("phase", "fluid", {"fluid", "solid"}) == "solid" ? 1 : 0;
-        if (p.kind == "point") {
-            p.quantity = s.choice("quantity", "pressure", {"pressure", "density", "velocity"});
-            p.position = s.vector("position", dim, "[m]");
-        } else {
-            const std::string axis = s.choice("axis", "x", dim == 2 ? std::vector<std::string>{"x", "y"}
-                                                                    : std::vector<std::string>{"x", "y", "z"});
-            p.axis = axis[0] - 'x';
-            if (s.has("min") || s.has("max")) {
-                p.has_region = true;
-                p.min = s.vector("min", dim, "[m]");
-                p.max = s.vector("max", dim, "[m]");
-            }
-        }
-        c.probes.push_back(std::move(p));
-    }
 
     if (top.has("crater")) {
         const Section crater = top.section("crater");

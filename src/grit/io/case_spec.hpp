@@ -126,20 +126,6 @@ struct OutletSpec {
     std::vector<double> velocity;  ///< clamps only [m/s]
 };
 
-/// A probe written as a column of series.csv.
-struct ProbeSpec {
-    std::string key;
-    std::string name;      ///< column name
-    std::string kind;      ///< "point": Shepard interpolation; "front": furthest particle along an axis
-    int phase = 0;         ///< the phase sampled: 0 fluid (default), 1 solid
-    std::string quantity;  ///< point: "pressure", "density", "velocity"
-    std::vector<double> position;  ///< point [m]
-    int axis = 0;                  ///< front: 0 = x, 1 = y, 2 = z
-    bool has_region = false;       ///< front: only particles inside [min, max]
-    std::vector<double> min, max;
-};
-
-
 /// A block of DEM grains: one grain at `position`, a lattice, or random non-overlapping grains in a box.
 struct GrainBlockSpec {
     std::string key;
@@ -295,7 +281,6 @@ struct CaseSpec {
     std::vector<OutletSpec> clamps;  ///< boxes: solid particles inside at the start move at the clamp's velocity
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
-    std::vector<ProbeSpec> probes;
 
     bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (3D: crater_length)
     double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;

@@ -121,15 +121,25 @@ void FluidInSolidModule<Dim>::output_values(std::vector<sim::OutputValue>& out) 
 }
 
 template <int Dim>
+ProbesModule<Dim>::ProbesModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup), probes_(setup.spec.template module_spec<ProbesSpec>(ProbesSpec::key)->probes) {}
+
+template <int Dim>
 double ProbesModule<Dim>::value(std::size_t k) const {
-    return analysis::evaluate_probe(setup_.spec.probes[k], state_.particles, setup_.kernel, setup_.spacing,
-                                    setup_.periodic_box);
+    return analysis::evaluate_probe(probes_.at(k), state_.particles, setup_.kernel, setup_.spacing, setup_.periodic_box);
+}
+
+template <int Dim>
+double ProbesModule<Dim>::value(const std::string& name) const {
+    for (std::size_t k = 0; k < probes_.size(); ++k)
+        if (probes_[k].name == name) return value(k);
+    throw std::out_of_range("no probe named '" + name + "'");
 }
 
 template <int Dim>
 void ProbesModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    for (std::size_t k = 0; k < setup_.spec.probes.size(); ++k) {
-        const auto& p = setup_.spec.probes[k];
+    for (std::size_t k = 0; k < probes_.size(); ++k) {
+        const auto& p = probes_[k];
         const char* unit = p.kind == "front"           ? "m"
                            : p.quantity == "pressure" ? "Pa"
                            : p.quantity == "density"  ? "kg/m^3"

@@ -6,6 +6,8 @@
 
 #include <fstream>
 
+#include "grit/analysis/probes.hpp"
+#include "grit/modules/probes_table.hpp"
 #include "grit/sim/module.hpp"
 
 namespace grit::modules {
@@ -72,16 +74,19 @@ private:
 template <int Dim>
 class ProbesModule final : public sim::Module<Dim> {
 public:
-    ProbesModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup) : state_(state), setup_(setup) {}
+    ProbesModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup);
     std::string name() const override { return "probes"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
-    /// The value of probe k now.
+    /// The value of probe k (case order) now.
     double value(std::size_t k) const;
+    /// The value of the probe named `name` now; throws std::out_of_range if there is none.
+    double value(const std::string& name) const;
 
 private:
     const sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
+    const std::vector<analysis::ProbeSpec>& probes_;
 };
 
 extern template class CraterModule<2>;

@@ -14,6 +14,7 @@
 #include "grit/modules/isph_fluid.hpp"
 #include "grit/modules/mesh_wear.hpp"
 #include "grit/modules/open_boundaries.hpp"
+#include "grit/modules/probes_table.hpp"
 #include "grit/modules/sph_fluid.hpp"
 #include "grit/modules/sph_solid.hpp"
 #include "grit/modules/symmetry_plane.hpp"
@@ -97,7 +98,10 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     table.push_back(plain<Dim, SymmetryPlaneModule>("symmetry_plane", after, [](const Spec& s) {
         return s.has_sph() && s.symmetry_plane;
     }, particle_forces));
-    table.push_back(plain<Dim, ProbesModule>("probes", after, [](const Spec& s) { return !s.probes.empty(); }));
+    table.push_back(plain<Dim, ProbesModule>("probes", after, [](const Spec& s) {
+        const auto* probes = s.module_spec<ProbesSpec>(ProbesSpec::key);
+        return probes && !probes->probes.empty();
+    }));
     return table;
 }
 
@@ -108,10 +112,10 @@ template std::vector<sim::ModuleDescriptor<3>> builtin_modules<3>();
 
 namespace grit::io {
 
-// None yet: the tables of the modules above are still read by io/case_reader.cpp into CaseSpec's own
-// members. A module whose table moves out of the reader adds its io::CaseTable here.
+// The tables grit's modules read themselves; the others are still read by io/case_reader.cpp into
+// CaseSpec's own members.
 std::vector<CaseTable> builtin_case_tables() {
-    return {};
+    return {modules::probes_table()};
 }
 
 }  // namespace grit::io

@@ -127,14 +127,14 @@ void Simulation<Dim>::advance_to(double target, const std::function<void()>& aft
 
 template <int Dim>
 double Simulation<Dim>::probe(std::size_t k) const {
+    if (!probes_) throw std::out_of_range("the case has no probes");
     return probes_->value(k);
 }
 
 template <int Dim>
 double Simulation<Dim>::probe(const std::string& name) const {
-    for (std::size_t k = 0; k < spec_.probes.size(); ++k)
-        if (spec_.probes[k].name == name) return probes_->value(k);
-    throw std::out_of_range("no probe named '" + name + "'");
+    if (!probes_) throw std::out_of_range("no probe named '" + name + "': the case has no probes");
+    return probes_->value(name);
 }
 
 template <int Dim>

@@ -18,6 +18,7 @@
 
 #include "grit/core/error.hpp"
 #include "grit/core/types.hpp"
+#include "grit/modules/probes_table.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/case_spec.hpp"
 #include "support/case_text.hpp"
@@ -242,15 +243,17 @@ TEST_F(CaseReaderTest, MinimalCaseGivesExpectedSpec) {
     EXPECT_EQ(c.domain_min, (std::vector<double>{-0.125, -0.125}));
     EXPECT_EQ(c.domain_max, (std::vector<double>{0.625, 0.5}));
 
-    ASSERT_EQ(c.probes.size(), 2u);
-    EXPECT_EQ(c.probes[0].name, "p_bottom");
-    EXPECT_EQ(c.probes[0].kind, "point");
-    EXPECT_EQ(c.probes[0].quantity, "pressure");
-    EXPECT_EQ(c.probes[0].position, (std::vector<double>{0.125, 0.0625}));
-    EXPECT_EQ(c.probes[1].name, "front");
-    EXPECT_EQ(c.probes[1].kind, "front");
-    EXPECT_EQ(c.probes[1].axis, 0);
-    EXPECT_FALSE(c.probes[1].has_region);
+    // [[probe]] is the probes module's own table (modules/probes_table.cpp), read through the same reader.
+    const auto& probes = c.module_spec<grit::modules::ProbesSpec>(grit::modules::ProbesSpec::key)->probes;
+    ASSERT_EQ(probes.size(), 2u);
+    EXPECT_EQ(probes[0].name, "p_bottom");
+    EXPECT_EQ(probes[0].kind, "point");
+    EXPECT_EQ(probes[0].quantity, "pressure");
+    EXPECT_EQ(probes[0].position, (std::vector<double>{0.125, 0.0625}));
+    EXPECT_EQ(probes[1].name, "front");
+    EXPECT_EQ(probes[1].kind, "front");
+    EXPECT_EQ(probes[1].axis, 0);
+    EXPECT_FALSE(probes[1].has_region);
 }
 
 TEST_F(CaseReaderTest, NameComesFromTheFileStemUnlessCaseToml) {
