@@ -41,7 +41,7 @@ test-long: build
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF \
 	  -DGRIT_UNITY_BUILD=ON
-	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests grit_case_tests
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests grit_case_tests grit_extension_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --test-dir $(SANITIZE_BUILD) --output-on-failure -j $(JOBS) -L unit
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \

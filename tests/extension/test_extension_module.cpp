@@ -1,6 +1,8 @@
 // A module from outside grit's sources (tracer_module.cpp) is read, validated and run through the module
 // catalog and the case-table registry: nothing in src/grit/sim or src/grit/io names it.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -22,13 +24,19 @@ namespace fs = std::filesystem;
 
 const fs::path hydrostatic = fs::path(GRIT_SOURCE_DIR) / "cases" / "hydrostatic_2d" / "case.toml";
 
-/// The hydrostatic tank with `table` appended, written to a temporary case file.
+/// The hydrostatic tank with `table` appended, written to a temporary case file (removed at exit).
 fs::path tank_with(const std::string& table) {
+    static const struct Scratch {
+        fs::path file = fs::temp_directory_path() / fmt::format("grit_tracer_{}.toml", ::getpid());
+        ~Scratch() {
+            std::error_code ignored;
+            fs::remove(file, ignored);
+        }
+    } scratch;
     std::ifstream in(hydrostatic);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const fs::path file = fs::temp_directory_path() / fmt::format("grit_tracer_{}.toml", ::getpid());
-    std::ofstream(file) << text << "\n" << table << "\n";
-    return file;
+    std::ofstream(scratch.file) << text << "\n" << table << "\n";
+    return scratch.file;
 }
 
 const std::string tracer = "[tracer]\ncentre = [0.2, 0.15]\nradius = 0.05\n";

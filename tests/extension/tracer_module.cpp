@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "grit/core/error.hpp"
+#include "grit/io/case_section.hpp"
 #include "grit/io/case_tables.hpp"
 #include "grit/sim/module_catalog.hpp"
 

@@ -36,11 +36,13 @@ public:
     /// This sub-domain's rank and the number of sub-domains.
     virtual int rank() const = 0;
     virtual int size() const = 0;
-    /// Collective reductions over every rank.
+    /// Collective reductions over every rank. min and max leave NaN out (a sub-domain that has no value
+    /// yet, such as no removal yet, reports NaN): NaN only when every rank has NaN.
     virtual double min(double value) const = 0;
     virtual double max(double value) const = 0;
     virtual double sum(double value) const = 0;
-    /// True on every rank when `value` is true on any (the shared neighbour-list rebuild decision).
+    /// True on every rank when `value` is true on any (for the shared neighbour-list rebuild decision, which
+    /// does not go through it yet: each list is still rebuilt by its owner).
     virtual bool any(bool value) const = 0;
 
     /// `value` of this rank combined with the others' by `kind`. `same` returns it as it is (every rank

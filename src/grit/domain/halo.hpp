@@ -6,6 +6,7 @@
 // for a stage that spreads a contribution onto particles it does not own.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <stdexcept>
 #include <type_traits>
@@ -55,12 +56,14 @@ public:
         owners_.clear();
         ghosts_.clear();
         transforms_.clear();
+        grouped_ = false;
     }
     /// Ghost `ghost` (an index past the owned range) copies owner `owner` under `t`.
     void add(Index owner, Index ghost, const Transform& t) {
         owners_.push_back(owner);
         ghosts_.push_back(ghost);
         transforms_.push_back(t);
+        grouped_ = false;
     }
     std::size_t size() const { return owners_.size(); }
     const std::vector<Index>& owners() const { return owners_; }
@@ -71,24 +74,18 @@ public:
     /// transform mirrors (vectors and tensors as FieldBase::mirror_copy says), then `position` (the set's
     /// positions, one of those fields) shifted where it shifts.
     void forward(particles::FieldRegistry& fields, Vec* position) const {
+        group();
         // One pass per kind of transform, in entry order within each: the same copies as one by one.
-        std::vector<Index> from, to;
         for (int axis = -1; axis < Dim; ++axis) {
-            from.clear();
-            to.clear();
-            for (std::size_t k = 0; k < size(); ++k)
-                if (transforms_[k].mirror_axis == axis) {
-                    from.push_back(owners_[k]);
-                    to.push_back(ghosts_[k]);
-                }
-            if (from.empty()) continue;
+            const Group& g = groups_[static_cast<std::size_t>(axis + 1)];
+            if (g.from.empty()) continue;
             if (axis < 0)
-                fields.copy(from, to);
+                fields.copy(g.from, g.to);
             else
-                fields.mirror_copy(from, to, axis);
+                fields.mirror_copy(g.from, g.to, axis);
         }
-        for (std::size_t k = 0; k < size(); ++k)
-            if (transforms_[k].shifted) position[ghosts_[k]] += transforms_[k].shift;
+        for (const std::size_t k : shifted_)
+            position[ghosts_[k]] += transforms_[k].shift;
     }
 
     /// Owner to ghost for one array: scalars copied, vectors as directions (mirrored, not shifted).
@@ -113,14 +110,40 @@ public:
 private:
     template <class T>
     static T carried(const T& v, const Transform& t) {
+        // Tensors would need mirroring too: whole registries go through forward(fields, position).
+        static_assert(std::is_arithmetic_v<T> || std::is_same_v<T, Vec>, "one array of numbers or vectors");
         if constexpr (std::is_same_v<T, Vec>)
             return t.direction(v);
         else
             return v;
     }
 
+    /// The entries by kind of transform (no mirror, then each mirror axis), and those that shift: made
+    /// once per set of entries, as a halo is forwarded several times a step between its rebuilds.
+    struct Group {
+        std::vector<Index> from, to;
+    };
+    void group() const {
+        if (grouped_) return;
+        for (auto& g : groups_) {
+            g.from.clear();
+            g.to.clear();
+        }
+        shifted_.clear();
+        for (std::size_t k = 0; k < size(); ++k) {
+            Group& g = groups_[static_cast<std::size_t>(transforms_[k].mirror_axis + 1)];
+            g.from.push_back(owners_[k]);
+            g.to.push_back(ghosts_[k]);
+            if (transforms_[k].shifted) shifted_.push_back(k);
+        }
+        grouped_ = true;
+    }
+
     std::vector<Index> owners_, ghosts_;
     std::vector<Transform> transforms_;
+    mutable std::array<Group, Dim + 1> groups_;
+    mutable std::vector<std::size_t> shifted_;
+    mutable bool grouped_ = false;
 };
 
 /// The periodic ghosts of `n` points `x` inside `box`: one per owner within `width` of a periodic face and

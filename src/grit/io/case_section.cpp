@@ -6,7 +6,9 @@
 
 namespace grit::io {
 
+namespace {
 using core::InputError;
+}  // namespace
 
 std::string repr(const toml::node& node) {
     std::ostringstream os;

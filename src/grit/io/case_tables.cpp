@@ -1,6 +1,8 @@
 // The registry of module-owned case tables (case_tables.hpp).
 #include "grit/io/case_tables.hpp"
 
+#include "grit/io/case_section.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 

@@ -9,10 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "grit/io/case_section.hpp"
 #include "grit/io/case_spec.hpp"
 
 namespace grit::io {
+
+class Section;  // io/case_section.hpp: what a table's reader reads through (the reader's own include)
 
 struct CaseTable {
     /// The top-level key: a table ([key]) or an array of tables ([[key]]), as the reader reads it.

@@ -3,7 +3,9 @@
 
 namespace grit::io {
 
+namespace {
 using core::InputError;
+}  // namespace
 
 material::Material read_material(const Section& s, const std::string& name) {
     material::Material m;

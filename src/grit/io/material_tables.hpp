@@ -49,8 +49,6 @@ private:
         return index;
     }
 
-public:
-
 private:
     const Section& defined_;
     std::vector<material::Material>& used_;

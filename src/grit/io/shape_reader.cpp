@@ -5,7 +5,9 @@
 
 namespace grit::io {
 
+namespace {
 using core::InputError;
+}  // namespace
 
 OutletSpec read_box(const Section& s, int dim) {
     OutletSpec o;

@@ -86,15 +86,16 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     table.push_back(plain<Dim, CouplingModule>("coupling", after, [](const Spec& s) {
         return s.has_grains() && s.has_sph() && s.coupling.enabled && has_fluid(s);
     }));
+    // The wear books the impacts of the grains' step; the feeds add grains after the grains' own exits.
     table.push_back(plain<Dim, MeshWearModule>("mesh_walls", after, [](const Spec& s) {
         return s.has_grains() && !s.meshes.empty();
-    }));
+    }, {"grains"}));
     table.push_back(plain<Dim, GrainFeedModule>("grain_feed", after, [](const Spec& s) {
         return s.has_grains() && !s.grain_feeds.empty();
-    }));
+    }, {"grains"}));
     table.push_back(plain<Dim, AbrasiveFeedModule>("abrasive_feed", after, [](const Spec& s) {
         return s.has_grains() && s.abrasive.enabled;
-    }));
+    }, {"grains"}));
     table.push_back(plain<Dim, SymmetryPlaneModule>("symmetry_plane", after, [](const Spec& s) {
         return s.has_sph() && s.symmetry_plane;
     }, particle_forces));

@@ -1,6 +1,8 @@
 // The probes' case table (probes_table.hpp).
 #include "grit/modules/probes_table.hpp"
 
+#include "grit/io/case_section.hpp"
+
 #include <memory>
 #include <set>
 #include <string>

@@ -190,9 +190,9 @@ void SymmetryPlaneModule<Dim>::return_image_forces() {
     if (sources_generation_ != ps.generation() || held_.size() != images_.size())
         throw std::logic_error("symmetry plane: the particle set changed between the sums and the grain forces");
     auto* a = ps.acceleration();
-    std::vector<core::Vec<Dim>> added(images_.size());
-    for (std::size_t k = 0; k < images_.size(); ++k) added[k] = a[images_[k]] - held_[k];
-    halo_.reverse_add(added.data(), a);
+    // What the grains added to each image since the sums (held_ becomes it), back onto the sources.
+    for (std::size_t k = 0; k < images_.size(); ++k) held_[k] = a[images_[k]] - held_[k];
+    halo_.reverse_add(held_.data(), a);
 }
 
 template class SymmetryPlaneModule<2>;

@@ -32,6 +32,8 @@ const std::vector<ModuleDescriptor<Dim>>& module_catalog() {
 
 template <int Dim>
 void register_module(ModuleDescriptor<Dim> d) {
+    if (d.name.empty() || !d.wanted || !d.make)
+        throw std::logic_error("a module descriptor needs a name, a wanted predicate and a factory");
     auto& table = catalog<Dim>();
     if (std::any_of(table.begin(), table.end(), [&](const auto& e) { return e.name == d.name; }))
         throw std::logic_error("a module named '" + d.name + "' is already in the catalog");
@@ -43,7 +45,12 @@ void make_modules(BuildTime when, const io::CaseSpec& spec, State<Dim>& state, c
                   std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vector<std::string>& names) {
     for (const auto& d : catalog<Dim>()) {
         if (d.build_time != when || !d.wanted(spec)) continue;
-        modules.push_back(d.make(ModuleContext<Dim>{state, setup, modules}));
+        auto made = d.make(ModuleContext<Dim>{state, setup, modules});
+        // The order and the pipeline go by the descriptor's name, checkpoints by the module's: one name.
+        if (!made || made->name() != d.name)
+            throw std::logic_error("the module made by descriptor '" + d.name + "' is named '" +
+                                   (made ? made->name() : std::string("(none)")) + "'");
+        modules.push_back(std::move(made));
         names.push_back(d.name);
     }
 }

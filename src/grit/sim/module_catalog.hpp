@@ -1,6 +1,6 @@
 // The modules grit can run, as descriptors: when a case wants one, how to make it, when in the set-up it is
-// made, and which modules its stages follow. The Simulation assembles a case's modules from this table and
-// never names a module; adding a module is its own files plus one descriptor (register_module).
+// made, and which modules its stages follow. The Simulation assembles a case's modules from this table;
+// adding a module is its own files plus one descriptor (modules/catalog.cpp, or register_module from outside).
 #pragma once
 
 #include <functional>

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 #include "grit/domain/comm.hpp"
@@ -16,8 +18,14 @@ public:
     explicit FixedPeers(std::vector<double> others) : others_(std::move(others)) {}
     int rank() const override { return 0; }
     int size() const override { return 1 + static_cast<int>(others_.size()); }
-    double min(double v) const override { return std::min(v, *std::min_element(others_.begin(), others_.end())); }
-    double max(double v) const override { return std::max(v, *std::max_element(others_.begin(), others_.end())); }
+    double min(double v) const override {
+        for (double o : others_) v = std::fmin(v, o);  // NaN left out, as Comm says
+        return v;
+    }
+    double max(double v) const override {
+        for (double o : others_) v = std::fmax(v, o);
+        return v;
+    }
     double sum(double v) const override {
         for (double o : others_) v += o;
         return v;
@@ -52,6 +60,9 @@ TEST(Comm, EachCombineKindReducesAsItsNameSays) {
     EXPECT_EQ(comm.combine(Combine::whole_set, 1.0), 1.0);
     EXPECT_TRUE(comm.any(false));  // another rank's list is stale: every rank rebuilds
     EXPECT_STREQ(combine_name(Combine::whole_set), "whole_set");
+    // A rank with no value yet (NaN: no removal yet) leaves the others' minimum as it is.
+    EXPECT_EQ(comm.combine(Combine::min, std::nan("")), -2.0);
+    EXPECT_TRUE(std::isnan(FixedPeers({std::nan("")}).combine(Combine::min, std::nan(""))));
 }
 
 }  // namespace

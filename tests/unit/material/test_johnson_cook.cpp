@@ -195,7 +195,7 @@ TEST(JohnsonCook, LibrarySolidsAreCompleteAndDescribed) {
         EXPECT_EQ(jc.failure.melt_temperature, jc.strength.melt_temperature);
         EXPECT_GT(jc.failure.failure_strain(0.0, 1.0, m.solid.room_temperature), 0.0);
         const std::string text = grit::material::describe(m);
-        // The keys of a case file's material section (io/case_reader.cpp).
+        // The keys of a case file's material section (io/material_tables.cpp).
         for (const char* key : {"shear_modulus = ", "model = \"johnson_cook\"", "yield_stress = ",
                                 "hardening_modulus = ", "hardening_exponent = ", "strain_rate_coefficient = ",
                                 "thermal_softening_exponent = ", "reference_strain_rate = ", "melt_temperature = ",

@@ -60,7 +60,7 @@ TEST(JH2, LibraryHoldsTable3) {
     EXPECT_DOUBLE_EQ(eos.k3, 22.69e9);
     EXPECT_DOUBLE_EQ(jh2_of(m).bulk_modulus, 10.45e9);  // eq. (41) uses the EOS's K1
     EXPECT_NEAR(m.sound_speed(), std::sqrt(10.45e9 / 2460.0), 1e-9);
-    // `grit materials` prints the keys a case file's material section takes (io/case_reader.cpp).
+    // `grit materials` prints the keys a case file's material section takes (io/material_tables.cpp).
     const std::string text = grit::material::describe(m);
     for (const char* line : {"  eos = \"polynomial\"\n", "  k1 = 10450000000 # [Pa]", "  model = \"jh2\"\n",
                              "  hel_pressure = 1450000000 # [Pa] (P_HEL)\n", "  intact_coefficient = 0.88 # (A)\n",
