@@ -23,7 +23,13 @@ int sync_path(const fs::path& path, int flags) {
 
 }  // namespace
 
-fs::path temporary_name(const fs::path& file) { return file.parent_path() / ("." + file.filename().string() + ".tmp"); }
+fs::path temporary_name(const fs::path& file) {
+    // Built by appending: GCC 12 warns (a false -Wstringop-overflow) on "." + std::string at -O3.
+    std::string name = ".";
+    name += file.filename().string();
+    name += ".tmp";
+    return file.parent_path() / name;
+}
 
 void commit_file(const fs::path& temporary, const fs::path& file) {
     std::error_code ignored;
