@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -32,6 +33,15 @@ double output_value(const sim::Simulation<Dim>& sim, const std::string& name) {
         if (v.name == name) return v.value;
     ADD_FAILURE() << "no output value '" << name << "'";
     return std::nan("");
+}
+
+/// Every case file under cases/, sorted (the tests that run them all: determinism, restart, units).
+inline std::vector<std::filesystem::path> all_cases() {
+    std::vector<std::filesystem::path> out;
+    for (const auto& e : std::filesystem::recursive_directory_iterator(std::filesystem::path(GRIT_SOURCE_DIR) / "cases"))
+        if (e.path().extension() == ".toml") out.push_back(e.path());
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 /// Reads cases/<relative> with overrides (reduced sizes for CI).

@@ -8,16 +8,9 @@
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
 
-namespace {
+using grit::testing::all_cases;
 
-std::vector<std::filesystem::path> all_cases() {
-    std::vector<std::filesystem::path> out;
-    const std::filesystem::path root = std::filesystem::path(GRIT_SOURCE_DIR) / "cases";
-    for (const auto& e : std::filesystem::recursive_directory_iterator(root))
-        if (e.path().extension() == ".toml") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
+namespace {
 
 template <int Dim>
 struct RunState {

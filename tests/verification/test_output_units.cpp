@@ -20,10 +20,7 @@ void expect_units(const grit::io::CaseSpec& spec) {
 }  // namespace
 
 TEST(OutputUnits, EveryValueOfEveryCaseHasAUnit) {
-    std::vector<std::filesystem::path> cases;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(std::filesystem::path(GRIT_SOURCE_DIR) / "cases"))
-        if (e.path().extension() == ".toml") cases.push_back(e.path());
-    std::sort(cases.begin(), cases.end());
+    const auto cases = grit::testing::all_cases();
     ASSERT_GE(cases.size(), 10u);
     for (const auto& path : cases) {
         SCOPED_TRACE(path.string());

@@ -20,14 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using grit::sim::Simulation;
-
-std::vector<fs::path> all_cases() {
-    std::vector<fs::path> out;
-    for (const auto& e : fs::recursive_directory_iterator(fs::path(GRIT_SOURCE_DIR) / "cases"))
-        if (e.path().extension() == ".toml") out.push_back(e.path());
-    std::sort(out.begin(), out.end());
-    return out;
-}
+using grit::testing::all_cases;
 
 fs::path scratch_file(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / "grit_restart_tests";
