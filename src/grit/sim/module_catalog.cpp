@@ -42,7 +42,7 @@ void register_module(ModuleDescriptor<Dim> d) {
 
 template <int Dim>
 void make_modules(BuildTime when, const io::CaseSpec& spec, State<Dim>& state, const RunSetup<Dim>& setup,
-                  std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vector<std::string>& names) {
+                  std::vector<std::unique_ptr<Module<Dim>>>& modules) {
     for (const auto& d : catalog<Dim>()) {
         if (d.build_time != when || !d.wanted(spec)) continue;
         auto made = d.make(ModuleContext<Dim>{state, setup, modules});
@@ -51,13 +51,14 @@ void make_modules(BuildTime when, const io::CaseSpec& spec, State<Dim>& state, c
             throw std::logic_error("the module made by descriptor '" + d.name + "' is named '" +
                                    (made ? made->name() : std::string("(none)")) + "'");
         modules.push_back(std::move(made));
-        names.push_back(d.name);
     }
 }
 
 template <int Dim>
-void order_modules(std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vector<std::string>& names) {
+void order_modules(std::vector<std::unique_ptr<Module<Dim>>>& modules) {
     const std::size_t n = modules.size();
+    std::vector<std::string> names;
+    for (const auto& m : modules) names.push_back(m->name());
     std::vector<bool> placed(n, false);
     std::vector<std::size_t> order;
     auto index_of = [&](const std::string& name) {
@@ -76,25 +77,20 @@ void order_modules(std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vect
         placed[next] = true;
         order.push_back(next);
     }
-    std::vector<std::unique_ptr<Module<Dim>>> sorted_modules;
-    std::vector<std::string> sorted_names;
-    for (const std::size_t i : order) {
-        sorted_modules.push_back(std::move(modules[i]));
-        sorted_names.push_back(names[i]);
-    }
-    modules = std::move(sorted_modules);
-    names = std::move(sorted_names);
+    std::vector<std::unique_ptr<Module<Dim>>> sorted;
+    for (const std::size_t i : order) sorted.push_back(std::move(modules[i]));
+    modules = std::move(sorted);
 }
 
 template const std::vector<ModuleDescriptor<2>>& module_catalog<2>();
 template void register_module<2>(ModuleDescriptor<2>);
 template void make_modules<2>(BuildTime, const io::CaseSpec&, State<2>&, const RunSetup<2>&,
-                               std::vector<std::unique_ptr<Module<2>>>&, std::vector<std::string>&);
-template void order_modules<2>(std::vector<std::unique_ptr<Module<2>>>&, std::vector<std::string>&);
+                               std::vector<std::unique_ptr<Module<2>>>&);
+template void order_modules<2>(std::vector<std::unique_ptr<Module<2>>>&);
 template const std::vector<ModuleDescriptor<3>>& module_catalog<3>();
 template void register_module<3>(ModuleDescriptor<3>);
 template void make_modules<3>(BuildTime, const io::CaseSpec&, State<3>&, const RunSetup<3>&,
-                               std::vector<std::unique_ptr<Module<3>>>&, std::vector<std::string>&);
-template void order_modules<3>(std::vector<std::unique_ptr<Module<3>>>&, std::vector<std::string>&);
+                               std::vector<std::unique_ptr<Module<3>>>&);
+template void order_modules<3>(std::vector<std::unique_ptr<Module<3>>>&);
 
 }  // namespace grit::sim

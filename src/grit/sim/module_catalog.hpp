@@ -58,15 +58,16 @@ const std::vector<ModuleDescriptor<Dim>>& module_catalog();
 template <int Dim>
 void register_module(ModuleDescriptor<Dim> descriptor);
 
-/// The modules `spec` wants, made at `when` (in table order), appended to `modules` and `names`.
+/// The modules `spec` wants, made at `when` (in table order), appended to `modules`. Throws std::logic_error
+/// for a module whose name() is not its descriptor's.
 template <int Dim>
 void make_modules(BuildTime when, const io::CaseSpec& spec, State<Dim>& state, const RunSetup<Dim>& setup,
-                  std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vector<std::string>& names);
+                  std::vector<std::unique_ptr<Module<Dim>>>& modules);
 
-/// Reorders `modules` (named by `names`, in the order they were made) so that each comes after every module
-/// its descriptor names in `after`, and otherwise keeps the order they were made in (the earliest ready
-/// module goes first). Throws std::logic_error for a cycle.
+/// Reorders `modules` (in the order they were made) so that each comes after every module its descriptor
+/// names in `after`, and otherwise keeps the order they were made in (the earliest ready module goes
+/// first). Throws std::logic_error for a cycle.
 template <int Dim>
-void order_modules(std::vector<std::unique_ptr<Module<Dim>>>& modules, std::vector<std::string>& names);
+void order_modules(std::vector<std::unique_ptr<Module<Dim>>>& modules);
 
 }  // namespace grit::sim

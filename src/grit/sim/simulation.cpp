@@ -46,15 +46,14 @@ Simulation<Dim>::Simulation(io::CaseSpec spec, RunOptions options)
 
     // The modules the case wants (modules/catalog.cpp): first those that register SPH fields, then the
     // particles, then those that need them (the grains and what acts on both sets).
-    std::vector<std::string> names;
-    make_modules(BuildTime::before_particles, spec_, state_, setup_, modules_, names);
+    make_modules(BuildTime::before_particles, spec_, state_, setup_, modules_);
     add_particle_blocks<Dim>(spec_, setup_.spacing, state_.particles);
     for (auto& m : modules_) m->initialise();
     check_and_wrap_into_domain(spec_, setup_.periodic_box, state_.particles);
     const std::size_t placed = modules_.size();
-    make_modules(BuildTime::after_particles, spec_, state_, setup_, modules_, names);
+    make_modules(BuildTime::after_particles, spec_, state_, setup_, modules_);
     for (std::size_t k = placed; k < modules_.size(); ++k) modules_[k]->initialise();
-    order_modules(modules_, names);
+    order_modules(modules_);
     probes_ = module<modules::ProbesModule<Dim>>();
 
     for (auto& m : modules_) {
