@@ -89,25 +89,25 @@ template <int Dim>
 void SymmetryPlaneModule<Dim>::find_sources() {
     auto& ps = state_.particles;
     if (sources_generation_ == ps.generation()) return;
-    images_.clear();
-    sources_.clear();
+    std::vector<Index> images;
     const std::int32_t* id = ps.id();
     const auto* x = ps.position();
     std::unordered_map<std::int32_t, Index> near;
     for (Index i = 0; i < ps.size(); ++i) {
         if (ps.is_image(i)) {
-            images_.push_back(i);
+            images.push_back(i);
         } else if (x[i][axis] < 2.0 * depth_) {  // a source moves less than half a skin between builds
             near.emplace(id[i], i);
         }
     }
+    halo_.clear();
     std::vector<Index> orphans;
-    for (const Index image : images_) {
+    for (const Index image : images) {
         const auto it = near.find(Particles<Dim>::image_source(id[image]));
         if (it == near.end())
             orphans.push_back(image);
         else
-            sources_.push_back(it->second);
+            halo_.add(it->second, image, domain::GhostTransform<Dim>::mirror(axis));
     }
     if (!orphans.empty()) {  // their sources left (outlets, erosion): the images go too
         std::vector<Index> keep;
@@ -124,9 +124,6 @@ void SymmetryPlaneModule<Dim>::find_sources() {
         find_sources();
         return;
     }
-    halo_.clear();
-    for (std::size_t k = 0; k < images_.size(); ++k)
-        halo_.add(sources_[k], images_[k], domain::GhostTransform<Dim>::mirror(axis));
     sources_generation_ = ps.generation();
 }
 
@@ -146,7 +143,9 @@ void SymmetryPlaneModule<Dim>::refresh() {
     find_sources();
     halo_.forward(ps.fields(), ps.position());
     std::int32_t* id = ps.id();
-    for (std::size_t k = 0; k < images_.size(); ++k) id[images_[k]] = Particles<Dim>::image_id(id[sources_[k]]);
+    const auto& images = halo_.ghosts();
+    const auto& sources = halo_.owners();
+    for (std::size_t k = 0; k < images.size(); ++k) id[images[k]] = Particles<Dim>::image_id(id[sources[k]]);
 }
 
 template <int Dim>
@@ -180,18 +179,20 @@ template <int Dim>
 void SymmetryPlaneModule<Dim>::hold_image_rates() {
     find_sources();
     const auto* a = state_.particles.acceleration();
-    held_.resize(images_.size());
-    for (std::size_t k = 0; k < images_.size(); ++k) held_[k] = a[images_[k]];
+    const auto& images = halo_.ghosts();
+    held_.resize(images.size());
+    for (std::size_t k = 0; k < images.size(); ++k) held_[k] = a[images[k]];
 }
 
 template <int Dim>
 void SymmetryPlaneModule<Dim>::return_image_forces() {
     auto& ps = state_.particles;
-    if (sources_generation_ != ps.generation() || held_.size() != images_.size())
+    const auto& images = halo_.ghosts();
+    if (sources_generation_ != ps.generation() || held_.size() != images.size())
         throw std::logic_error("symmetry plane: the particle set changed between the sums and the grain forces");
     auto* a = ps.acceleration();
     // What the grains added to each image since the sums (held_ becomes it), back onto the sources.
-    for (std::size_t k = 0; k < images_.size(); ++k) held_[k] = a[images_[k]] - held_[k];
+    for (std::size_t k = 0; k < images.size(); ++k) held_[k] = a[images[k]] - held_[k];
     halo_.reverse_add(held_.data(), a);
 }
 

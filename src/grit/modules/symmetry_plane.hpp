@@ -44,7 +44,7 @@ private:
     void hold_image_rates();
     /// What grains added to each image's acceleration, mirrored onto its source.
     void return_image_forces();
-    /// The index of each image's source (sources_), when the set changed since they were found.
+    /// Each image with its source (halo_), when the set changed since they were found.
     void find_sources();
     /// New grains straddle the plane or not; straddlers a radius off it no longer do; straddlers whose
     /// centre crossed are reflected (their twins crossed the other way).
@@ -52,7 +52,6 @@ private:
 
     sim::State<Dim>& state_;
     double depth_ = 0.0;  ///< images of the particles closer than this to the plane [m]
-    std::vector<Index> images_, sources_;
     /// Each image as the mirror ghost of its source: refreshed forward, what grains add returned in reverse.
     domain::Halo<Dim> halo_;
     std::vector<core::Vec<Dim>> held_;
