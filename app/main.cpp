@@ -386,11 +386,13 @@ int main(int argc, char** argv) {
         for (const auto& w : grit::wear::wear_material_library())
             fmt::print("{}: wear (mesh walls): rho = {} kg/m^3, E = {:g} Pa, nu = {}, flow_stress = {:g} Pa, "
                        "elastic_limit = {:g} Pa, vickers_hardness = {} GPa, finnie_k = {}, finnie_psi = {}, "
-                       "bitter_exponent = {}, bitter_roundness = {}, bitter_deformation_factor = {:g} J/m^3 (unverified: set it), "
+                       "bitter_exponent = {}, bitter_roundness = {}, bitter_deformation_factor = {:.3g} J/m^3 "
+                       "(derived from Oka at {:g} m/s, {:g} mm quartz), "
                        "oka_K = {} mm^3/kg, oka_k1 = {}, oka_k3 = {}, liggghts_k = {} s^2/m^2\n",
                        w.name, w.density, w.youngs_modulus, w.poisson_ratio, w.flow_stress, w.elastic_limit,
                        w.vickers_hardness, w.finnie_k, w.finnie_psi, w.bitter_exponent, w.bitter_roundness,
-                       w.bitter_deformation_factor, w.oka_K, w.oka_k1, w.oka_k3, w.liggghts_k);
+                       w.bitter_deformation_factor, w.bitter_calibration_speed, 1e3 * w.bitter_calibration_diameter,
+                       w.oka_K, w.oka_k1, w.oka_k3, w.liggghts_k);
         return 0;
     } catch (const grit::core::InputError& e) {
         fmt::print(stderr, "grit: error: {}\n", e.what());

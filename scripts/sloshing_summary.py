@@ -20,6 +20,7 @@ TANK_LENGTH = 0.245   # [m] the right wall's plane (x)
 FRONT_TIME = 0.12     # [s]
 FLOOR_LAYER = 0.02    # [m] water below this height counts towards the front along the floor
 AT_WALL = 0.240       # [m] water beyond this x has reached the right wall
+NEAR_WALL = 0.02      # [m] grains this close to the right wall count as at it when lifted
 
 
 def times_of(pvd):
@@ -52,6 +53,21 @@ def summary(out):
     grain_outputs = times_of(str(out / (pathlib.Path(fluid_pvd).stem + "_grains.pvd")))
     first = next((t for t, f in grain_outputs if read_vtu(f)["Points"][:, 0].max() > AT_WALL), None)
     rows["first grain at the right wall (x > 0.240 m) [s]"] = "-" if first is None else f"{first:.2f}"
+    # The paper's picture (sec. 3.1): grains near the right wall "lifted up to the top before they have
+    # contact with the wall", then "moving back to the left": how high grains near the wall rise, and whether
+    # the sand's mean x falls back after its largest value.
+    high, high_at, mean_x = 0.0, None, []
+    for t, f in grain_outputs:
+        p = read_vtu(f)["Points"]
+        near = p[:, 0] > TANK_LENGTH - NEAR_WALL
+        if near.any() and p[near, 2].max() > high:
+            high, high_at = p[near, 2].max(), t
+        mean_x.append((t, p[:, 0].mean()))
+    rows[f"highest grain within {1e3 * NEAR_WALL:.0f} mm of the right wall [mm] / at [s]"] = (
+        f"{1e3 * high:.1f} / {high_at:.2f}" if high_at is not None else "-")
+    peak_t, peak_x = max(mean_x, key=lambda e: e[1])
+    rows["grains' mean x: largest [m] / at [s] / at the end [m]"] = (
+        f"{peak_x:.3f} / {peak_t:.2f} / {mean_x[-1][1]:.3f}")
     grains = read_vtu(grain_outputs[-1][1])
     rows["grains' mean height at the end [mm]"] = f"{1e3 * grains['Points'][:, 2].mean():.1f}"
     rows["farthest grain at the end, x [m]"] = f"{grains['Points'][:, 0].max():.3f}"

@@ -228,6 +228,12 @@ expect_input_error "STL file cut short" "$W/cut.stl" "cut short" -- run "$WEAR" 
 expect_input_error "open STL where it must be watertight" "plate.stl" "16 open edges" "watertight" -- \
     run "$WEAR" --set 'mesh[0].watertight=true'
 expect_input_error "unknown wear model" "mesh[0].wear_model" "archard" -- run "$WEAR" --set 'mesh[0].wear_model=archard'
+HARD=(--set 'mesh[0].wear_material="hard"' --set 'wear_materials.hard.based_on="steel"')
+expect_input_error "Bitter's deformation factor neither a number nor \"oka\"" "wear_materials.hard.bitter_deformation_factor" \
+    "\"foo\"" "a number [J/m^3] or \"oka\"" -- run "$WEAR" "${HARD[@]}" --set 'wear_materials.hard.bitter_deformation_factor="foo"'
+expect_input_error "a calibration speed for a given deformation factor" "wear_materials.hard.bitter_calibration_speed" \
+    "only with bitter_deformation_factor = \"oka\"" -- run "$WEAR" "${HARD[@]}" \
+    --set 'wear_materials.hard.bitter_deformation_factor=1e11' --set 'wear_materials.hard.bitter_calibration_speed=50'
 MEMBRANE=$ROOT/cases/hydrostatic_membrane_3d/case.toml
 expect_input_error "thin wall round a closed side" "wall[1].thin" "side = \"front\" or \"back\"" "\"outside\"" -- \
     run "$MEMBRANE" --set 'wall[1].side=outside'

@@ -13,6 +13,7 @@
 #include <map>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "grit/mesh/signed_distance.hpp"
 #include "grit/modules/mesh_wear.hpp"
@@ -256,14 +257,104 @@ TEST(PeltonBucket, JetSplitWithoutCrossingLeakOrDeadWaterAndWearMidBucket) {
     EXPECT_LT(std::abs(mean_x), 0.5 * a);
 }
 
-// The second paper's sloshing tank with sand (cases/sloshing_tank_sand_3d), reduced to the surge's first
-// 0.1 s (8,174 steps). The water column collapses towards the right wall inside the STL tank and carries
-// the 1 mm sand, which sinks as it goes; the grains strike only the floor by then (docs/validation.md:
-// by 0.24 s all the wear is still on the floor). Measured (2026-11-27): water front 0.168 m, farthest
-// grain 0.132 m, grains' mean x 0.0486 -> 0.0573 m and mean height 0.0502 -> 0.0280 m, 213 impacts
-// at a mean 38 degrees, all on the floor.
+namespace {
+
+/// The second paper's qualitative picture of the tank's wear (sec. 3.1, Figs. 6-7), read from a run's impact
+/// log: when the floor and the end walls (x = 0 and x = L, across the slosh) first wear, where along the tank the
+/// floor's wear peaks by Finnie and by Bitter, and how low on the right wall its wear lies. Each impact is booked
+/// on the face its grain touches (the nearest of the box's six) with both models' formulas. The side walls
+/// (y = 0 and y = W, along the slosh) are reported apart: grains sliding on the floor graze them at its edge.
+struct TankWearPicture {
+    double period = 0.0;               ///< the first sloshing mode's period at the still depth [s]
+    double still_depth = 0.0;          ///< the water's volume over the floor's area [m]
+    double first_floor_wear = INFINITY, first_wall_wear = INFINITY;  ///< [s] the floor's, the end walls'
+    double first_side_wear = INFINITY;                               ///< [s] the side walls'
+    double first_side_height = NAN;                                  ///< that impact's grain centre above the floor [m]
+    /// x of the floor's most worn 25 mm along the tank [m]: five of the map's 5 mm strips, about 80 impacts each
+    /// by 0.24 s, whose counting noise (about 11 %) exceeds the differences between the strips of the profile's
+    /// plateau; 25 mm (0.1 L) resolves the peak to half the criterion's 0.2 L.
+    double floor_peak_finnie = NAN, floor_peak_bitter = NAN;
+    double right_wall_low_finnie = NAN, right_wall_low_bitter = NAN;  ///< share below half the still depth
+    double finnie_total = 0.0;         ///< [kg]
+    double length = 0.245;             ///< the tank's [m]
+};
+
+TankWearPicture tank_wear_picture(const grit::sim::Simulation<3>& sim, const grit::io::CaseSpec& spec) {
+    namespace wear = grit::wear;
+    TankWearPicture p;
+    const double width = 0.1, height = 0.1, strip = 0.005, g = 9.81;
+    p.still_depth = 0.1 * 0.1 * 0.1 / (p.length * width);  // the 0.1 m water cube spread over the floor
+    const double k = std::numbers::pi / p.length;
+    p.period = 2.0 * std::numbers::pi / std::sqrt(g * k * std::tanh(k * p.still_depth));
+    const auto& mesh = spec.meshes.front();
+    const auto& sand = spec.grain_materials[static_cast<std::size_t>(spec.grains.front().material)];
+    const double radius = 0.5e-3;
+    const wear::Impactor grain{sand.density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius, radius,
+                               sand.density, sand.youngs_modulus_for_wear(), sand.poisson_ratio};
+    const auto strips = static_cast<std::size_t>(std::ceil(p.length / strip));
+    std::vector<double> floor_finnie(strips), floor_bitter(strips);
+    double right_finnie = 0.0, right_bitter = 0.0, low_finnie = 0.0, low_bitter = 0.0;
+    for (const auto& r : sim.impacts().records()) {
+        const auto& x = r.position;
+        const std::array<double, 6> gap = {x[2], height - x[2], x[0], p.length - x[0], x[1], width - x[1]};
+        const auto face = std::min_element(gap.begin(), gap.end()) - gap.begin();  // 0 floor, 3 right wall
+        const double a = r.angle * std::numbers::pi / 180.0;
+        const double finnie = mesh.wear_material.density * wear::finnie_volume(mesh.wear_material, grain, r.speed, a);
+        const double bitter = mesh.wear_material.density * wear::bitter_volume(mesh.wear_material, grain, r.speed, a);
+        p.finnie_total += finnie;
+        if (finnie <= 0.0 && bitter <= 0.0) continue;
+        if (face == 0) {
+            p.first_floor_wear = std::min(p.first_floor_wear, r.time);
+            const auto i = std::min(strips - 1, static_cast<std::size_t>(std::max(0.0, x[0]) / strip));
+            floor_finnie[i] += finnie, floor_bitter[i] += bitter;
+        } else if (face >= 4) {
+            if (r.time < p.first_side_wear) p.first_side_wear = r.time, p.first_side_height = x[2];
+        } else {
+            p.first_wall_wear = std::min(p.first_wall_wear, r.time);
+        }
+        if (face == 3) {
+            right_finnie += finnie, right_bitter += bitter;
+            if (x[2] < 0.5 * p.still_depth) low_finnie += finnie, low_bitter += bitter;
+        }
+    }
+    auto peak = [&](const std::vector<double>& w) {  // the centre of the most worn five strips
+        std::vector<double> window(strips);
+        for (std::size_t i = 0; i < strips; ++i)
+            for (std::size_t j = i >= 2 ? i - 2 : 0; j <= std::min(strips - 1, i + 2); ++j) window[i] += w[j];
+        const auto i = std::max_element(window.begin(), window.end()) - window.begin();
+        return window[static_cast<std::size_t>(i)] > 0.0 ? (static_cast<double>(i) + 0.5) * strip : NAN;
+    };
+    p.floor_peak_finnie = peak(floor_finnie), p.floor_peak_bitter = peak(floor_bitter);
+    if (right_finnie > 0.0) p.right_wall_low_finnie = low_finnie / right_finnie;
+    if (right_bitter > 0.0) p.right_wall_low_bitter = low_bitter / right_bitter;
+    return p;
+}
+
+/// The qualitative criteria for the paper's picture: the floor wears at least a tenth of the sloshing period
+/// before an end wall does (or none has by `end`); Finnie's and Bitter's floor maxima lie within 0.2
+/// tank lengths of each other; at least 80 % of the right wall's wear, if any, lies below half the still depth.
+void expect_paper_picture(const TankWearPicture& p, double end) {
+    ASSERT_TRUE(std::isfinite(p.first_floor_wear));
+    EXPECT_GE(std::min(p.first_wall_wear, end) - p.first_floor_wear, 0.1 * p.period);
+    ASSERT_TRUE(std::isfinite(p.floor_peak_finnie) && std::isfinite(p.floor_peak_bitter));
+    EXPECT_LE(std::abs(p.floor_peak_finnie - p.floor_peak_bitter), 0.2 * p.length);
+    if (std::isfinite(p.right_wall_low_finnie)) {
+        EXPECT_GE(p.right_wall_low_finnie, 0.8);
+    }
+    if (std::isfinite(p.right_wall_low_bitter)) {
+        EXPECT_GE(p.right_wall_low_bitter, 0.8);
+    }
+}
+
+}  // namespace
+
+// The second paper's sloshing tank with sand (cases/sloshing_tank_sand_3d) to the paper's times (0.24 s).
+// At 0.1 s, the surge: the water column collapses towards the right wall inside the STL tank and carries
+// the 1 mm sand, which sinks as it goes, striking only the floor (water front 0.168 m, farthest grain
+// 0.132 m, grains' mean x 0.0486 -> 0.0573 m and mean height 0.0502 -> 0.0280 m, 215 impacts). At 0.24 s,
+// the paper's qualitative picture (expect_paper_picture) with the default drag.
 TEST(SloshingTank, SandRidesTheSurgeInsideTheStlTankAndWearsOnlyTheFloorFirst) {
-    auto spec = load_case("sloshing_tank_sand_3d/case.toml", {"time.end=0.1", "output.interval=1.0"});
+    auto spec = load_case("sloshing_tank_sand_3d/case.toml", {"output.interval=1.0"});
     grit::sim::Simulation<3> sim(spec, in_memory());
     const std::array<double, 3> tank = {0.245, 0.1, 0.1};
     const double radius = 0.5e-3;
@@ -278,7 +369,8 @@ TEST(SloshingTank, SandRidesTheSurgeInsideTheStlTankAndWearsOnlyTheFloorFirst) {
         return std::pair{mean, farthest};
     };
     const auto [start, start_far] = grain_means();
-    sim.advance_to(spec.end_time);
+    const double surge = 0.1;
+    sim.advance_to(surge);
 
     // Nothing left the tank: the water's centres inside the box, the grains' a half radius inside it at
     // least (the soft contact lets a grain overlap a wall by microns).
@@ -334,4 +426,19 @@ TEST(SloshingTank, SandRidesTheSurgeInsideTheStlTankAndWearsOnlyTheFloorFirst) {
     ASSERT_GT(total, 0.0);
     EXPECT_EQ(on_floor, total);
     EXPECT_NEAR(series_total, total, 1e-12 * total);
+
+    // On to the paper's 0.203 and 0.237 s, and its picture.
+    sim.advance_to(spec.end_time);
+    const TankWearPicture picture = tank_wear_picture(sim, spec);
+    std::printf("  first wear on the floor %.4f s, on an end wall %.4f s, on a side wall %.4f s at %.1f mm height "
+                "(sloshing period %.3f s); floor maxima at x = %.4f (Finnie) and %.4f m (Bitter); right wall's wear "
+                "below half the still depth %.0f %% (Finnie), %.0f %% (Bitter)\n",
+                picture.first_floor_wear, picture.first_wall_wear, picture.first_side_wear,
+                1e3 * picture.first_side_height, picture.period, picture.floor_peak_finnie,
+                picture.floor_peak_bitter, 100.0 * picture.right_wall_low_finnie, 100.0 * picture.right_wall_low_bitter);
+    // The impacts' Finnie wear, recomputed from the log, is the pipeline's: the Bitter picture read from the
+    // same impacts is what a Bitter run books (the wear does not act back on the grains).
+    const double end_total = grit::testing::output_value(sim, "wear_mass_total");
+    EXPECT_NEAR(picture.finnie_total, end_total, 1e-9 * end_total);
+    expect_paper_picture(picture, spec.end_time);
 }

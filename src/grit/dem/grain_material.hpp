@@ -21,6 +21,11 @@ struct GrainMaterial {
     double friction = 0.0;         ///< sliding friction coefficient mu [-] (first paper eq. 3)
     double restitution = 1.0;      ///< normal coefficient of restitution e [-] (eq. 11)
     double diameter = 0.0;         ///< nominal grain diameter [m] (0 when the material has none)
+    /// The grain's real Young's modulus where `youngs_modulus` is softened for a longer contact time step:
+    /// the wear models' elastic-limit speed (Bitter's eq. 26) takes it [Pa]; 0: `youngs_modulus`.
+    double wear_youngs_modulus = 0.0;
+
+    double youngs_modulus_for_wear() const { return wear_youngs_modulus > 0.0 ? wear_youngs_modulus : youngs_modulus; }
 };
 
 /// Garnet/alumina abrasive of the first seed paper, Table 4: rho 4120 kg/m^3, d 0.2 mm, E 248 GPa,

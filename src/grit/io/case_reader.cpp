@@ -500,7 +500,7 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         c.coupling.enabled = k.flag_or("enabled", true);
         // Up to 200 d: fine sand in coarse water (0.1 mm grains, 5 mm spacing) needs R_c = 2 h = 125 d.
         c.coupling.radius = k.number_or("radius", c.coupling.radius, in_range(0.5, 200.0));
-        c.coupling.drag = k.choice("drag", c.coupling.drag, {"gidaspow", "di_felice", "single_particle"});
+        c.coupling.drag = k.choice("drag", c.coupling.drag, {"gidaspow", "di_felice", "single_particle", "single_particle_as_printed"});
         c.coupling.min_porosity = k.number_or("min_porosity", c.coupling.min_porosity, in_range(0.01, 0.9));
     }
     for (const auto& name : grain_materials.keys()) {

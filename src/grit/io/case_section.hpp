@@ -50,6 +50,11 @@ public:
         const toml::node* n = node(key);
         return n && n->is_table();
     }
+    /// Whether `key` holds a string (for keys that take a number or a word).
+    bool holds_text(std::string_view key) const {
+        const toml::node* n = node(key);
+        return n && n->is_string();
+    }
     std::string key_path(std::string_view key) const {
         return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
     }

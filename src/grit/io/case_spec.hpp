@@ -194,7 +194,7 @@ struct DemSpec {
 struct CouplingSpec {
     bool enabled = true;               ///< coupling.enabled
     double radius = 2.0;               ///< coupling.radius: R_c in grain diameters (R_c = 2 h_c)
-    std::string drag = "gidaspow";     ///< coupling.drag: "gidaspow", "di_felice", "single_particle"
+    std::string drag = "gidaspow";     ///< coupling.drag: "gidaspow", "di_felice", "single_particle", "single_particle_as_printed"
     double min_porosity = 0.2;         ///< coupling.min_porosity: floor of the fluid particles' eps
 };
 

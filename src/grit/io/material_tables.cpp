@@ -148,6 +148,7 @@ dem::GrainMaterial read_grain_material(const Section& s, const std::string& name
     m.friction = s.number("friction", non_negative("[-]"));
     m.restitution = s.number("restitution", in_range(1e-6, 1.0));
     m.diameter = s.number_or("diameter", 0.0, non_negative("[m]"));
+    m.wear_youngs_modulus = s.number_or("wear_youngs_modulus", 0.0, positive("[Pa]"));
     return m;
 }
 
@@ -178,13 +179,38 @@ wear::WearMaterial read_wear_material(const Section& top, const Section& s, std:
     m.finnie_psi = d.number_or("finnie_psi", m.finnie_psi, positive("[-]"));
     m.bitter_exponent = d.number_or("bitter_exponent", m.bitter_exponent, in_range(1.0, 4.0));
     m.bitter_roundness = d.number_or("bitter_roundness", m.bitter_roundness, in_range(1e-3, 1.0));
-    m.bitter_deformation_factor = d.number_or("bitter_deformation_factor", m.bitter_deformation_factor, positive("[J/m^3]"));
     m.oka_K = d.number_or("oka_K", m.oka_K, positive("[mm^3/kg]"));
     m.oka_k1 = d.number_or("oka_k1", m.oka_k1);
     m.oka_k3 = d.number_or("oka_k3", m.oka_k3);
     m.oka_reference_speed = d.number_or("oka_reference_speed", m.oka_reference_speed, positive("[m/s]"));
     m.oka_reference_diameter = d.number_or("oka_reference_diameter", m.oka_reference_diameter, positive("[m]"));
     m.liggghts_k = d.number_or("liggghts_k", m.liggghts_k, positive("[s^2/m^2]"));
+    // Bitter's E_f: a number, or "oka" (derived from Oka's E90 at a calibration speed and grain size, after
+    // Oka's keys above). A built-in's derived E_f follows a changed hardness or Oka constant.
+    const bool given_as_word = d.holds_text("bitter_deformation_factor");
+    if (given_as_word && d.text("bitter_deformation_factor") != "oka")
+        d.fail("bitter_deformation_factor", "must be a number [J/m^3] or \"oka\" (derived from Oka's E90)");
+    const bool from_oka =
+        given_as_word || (!d.has("bitter_deformation_factor") && std::isfinite(m.bitter_calibration_speed));
+    const double speed = d.number_or("bitter_calibration_speed",
+                                     std::isfinite(m.bitter_calibration_speed) ? m.bitter_calibration_speed
+                                                                               : wear::bitter_reference_speed,
+                                     positive("[m/s]"));
+    const double diameter = d.number_or("bitter_calibration_diameter",
+                                        std::isfinite(m.bitter_calibration_diameter) ? m.bitter_calibration_diameter
+                                                                                     : wear::bitter_reference_diameter,
+                                        positive("[m]"));
+    if (from_oka) {
+        if (!std::isfinite(m.vickers_hardness))
+            d.fail("bitter_deformation_factor", "\"oka\" derives it from Oka's E90, which needs vickers_hardness [GPa]");
+        wear::derive_bitter_deformation_factor(m, speed, diameter);
+    } else {
+        if (d.has("bitter_calibration_speed") || d.has("bitter_calibration_diameter"))
+            d.fail(d.has("bitter_calibration_speed") ? "bitter_calibration_speed" : "bitter_calibration_diameter",
+                   "applies only with bitter_deformation_factor = \"oka\"");
+        m.bitter_deformation_factor = d.number_or("bitter_deformation_factor", m.bitter_deformation_factor, positive("[J/m^3]"));
+        m.bitter_calibration_speed = m.bitter_calibration_diameter = NAN;
+    }
     return m;
 }
 

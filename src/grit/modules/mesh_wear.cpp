@@ -62,7 +62,7 @@ void MeshWearModule<Dim>::book() {
                 const double radians = angle * std::numbers::pi / 180.0;
                 const auto& material = system.materials()[static_cast<std::size_t>(grains.material()[i])];
                 const wear::Impactor grain{grains.mass()[i], grains.radius()[i], material.density,
-                                           material.youngs_modulus, material.poisson_ratio};
+                                           material.youngs_modulus_for_wear(), material.poisson_ratio};
                 if (k.fresh) {
                     state_.impacts.add({time, grains.id()[i], spec.name, speed, angle,
                                         core::to_array3(grains.position()[i]), grains.collisions()[i]});

@@ -30,6 +30,10 @@ struct WearMaterial {
     double bitter_exponent = 2.3;            ///< n, the cutting term's velocity exponent [-]
     double bitter_roundness = 1.0;           ///< R_f, the grain's roundness factor [-]
     double bitter_deformation_factor = NAN;  ///< E_f (epsilon), energy to remove a unit volume by deformation [J/m^3]
+    /// Where E_f is derived from Oka's E90 (bitter_deformation_factor_from_oka): the quartz grain's speed [m/s]
+    /// and diameter [m] at which the two agree; NaN where E_f is a given number.
+    double bitter_calibration_speed = NAN;
+    double bitter_calibration_diameter = NAN;
     // Oka et al. 2005 (Part 2 correlations; SiO2 sand constants)
     double oka_K = 65.0;  ///< [mm^3/kg]
     double oka_k1 = -0.12;
@@ -63,11 +67,14 @@ inline double finnie_volume(const WearMaterial& w, const Impactor& g, double spe
 }
 
 /// Bitter's threshold speed D_k (eq. 26): below it, in the normal component, the impact is elastic [m/s].
+/// The density is the grain's: the speed at which a Hertzian impact first yields the target depends on the
+/// impactor's kinetic energy per volume (Johnson, Contact Mechanics, sec. 11.4), not the target's density
+/// the printed equation names (docs/theory.md, "Errata in the papers").
 inline double bitter_threshold_speed(const WearMaterial& w, const Impactor& g) {
     const double compliance = (1.0 - g.poisson_ratio * g.poisson_ratio) / g.youngs_modulus +
                               (1.0 - w.poisson_ratio * w.poisson_ratio) / w.youngs_modulus;
     return std::numbers::pi * std::numbers::pi / (2.0 * std::sqrt(10.0)) * std::pow(1.59 * w.elastic_limit, 2.5) *
-           std::sqrt(w.bitter_roundness / w.density) * compliance * compliance;
+           std::sqrt(w.bitter_roundness / g.density) * compliance * compliance;
 }
 
 /// Bitter's cutting speed scale C_k (eq. 25) [m/s].
@@ -123,6 +130,25 @@ inline double oka_e90(const WearMaterial& w, double speed, double diameter) {
 inline double oka_volume(const WearMaterial& w, const Impactor& g, double speed, double angle) {
     return g.mass * oka_e90(w, speed, 2.0 * g.radius) * oka_angle_function(w, angle) * 1e-9;
 }
+
+/// Bitter's deformation wear factor E_f that makes his normal-incidence term V^2 / (2 E_f), per kilogram of
+/// grains, equal Oka's E90 for quartz of `diameter` at `speed`: E_f = V^2 / (2 E90) [J/m^3]. No source gives
+/// E_f for grit's wall materials; Oka's measured constants do give E90 (docs/theory.md, "Wear models").
+inline double bitter_deformation_factor_from_oka(const WearMaterial& w, double speed, double diameter) {
+    return speed * speed / (2.0 * oka_e90(w, speed, diameter) * 1e-9);
+}
+
+/// Gives `w` the E_f derived from Oka at `speed` [m/s] and `diameter` [m], and records that it is derived.
+inline void derive_bitter_deformation_factor(WearMaterial& w, double speed, double diameter) {
+    w.bitter_calibration_speed = speed;
+    w.bitter_calibration_diameter = diameter;
+    w.bitter_deformation_factor = bitter_deformation_factor_from_oka(w, speed, diameter);
+}
+
+/// The built-in calibration of E_f: 1 mm quartz sand (the second paper's coarse sand) at 20 m/s (its Pelton
+/// jet's speed).
+inline constexpr double bitter_reference_speed = 20.0;      ///< [m/s]
+inline constexpr double bitter_reference_diameter = 1e-3;  ///< [m]
 
 /// LIGGGHTS' Finnie angle function (k = 2 in Finnie's form): sin 2a - 3 sin^2 a for tan a <= 1/3,
 /// cos^2 a / 3 beyond.
@@ -192,7 +218,7 @@ inline std::vector<WearMaterial> wear_material_library() {
     steel.vickers_hardness = 1.18;  // Oka et al. 2005 carbon steel (upper value)
     steel.flow_stress = 1.18e9;     // Finnie's flow pressure taken as the hardness
     steel.elastic_limit = 0.35e9;   // yield strength of a structural carbon steel
-    steel.bitter_deformation_factor = 7.7e9;  // not verified against a source (docs/theory.md)
+    derive_bitter_deformation_factor(steel, bitter_reference_speed, bitter_reference_diameter);
     WearMaterial aluminium;
     aluminium.name = "aluminium";
     aluminium.density = 2700.0;
@@ -201,7 +227,7 @@ inline std::vector<WearMaterial> wear_material_library() {
     aluminium.vickers_hardness = 0.36;  // Oka et al. 2005 aluminium
     aluminium.flow_stress = 0.36e9;
     aluminium.elastic_limit = 0.276e9;  // Al 6061-T6 yield strength
-    aluminium.bitter_deformation_factor = 2.0e9;  // not verified against a source (docs/theory.md)
+    derive_bitter_deformation_factor(aluminium, bitter_reference_speed, bitter_reference_diameter);
     return {steel, aluminium};
 }
 

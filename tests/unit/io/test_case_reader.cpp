@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "grit/io/case_spec.hpp"
 #include "support/case_text.hpp"
 #include "grit/io/particle_budget.hpp"
+#include "grit/wear/wear_models.hpp"
 
 namespace {
 
@@ -887,4 +889,34 @@ material = "water"
 TEST_F(CaseReaderTest, IsphRefusesWhatItDoesNotIntegrate) {
     expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases/awj_copper_2d/case.toml", {"fluid.solver=isph"},
                       {"'fluid.solver'", "\"isph\"", "does not yet handle", "\"wcsph\""});
+}
+
+// Bitter's deformation factor: the built-in's is derived from Oka (20 m/s, 1 mm quartz); a material based on
+// it with its own hardness re-derives it; "oka" derives it at the case's speed; a number is taken as given.
+TEST(CaseReader, BitterDeformationFactorDerivedFromOkaOrGiven) {
+    namespace wear = grit::wear;
+    const fs::path sweep = fs::path(GRIT_SOURCE_DIR) / "cases/wear_angle_sweep_3d/case.toml";
+    const Overrides hard = {"mesh[0].wear_model=bitter", "mesh[0].wear_material=\"hard\"",
+                            "wear_materials.hard.based_on=\"steel\""};
+    auto read = [&](Overrides more) {
+        Overrides all = hard;
+        all.insert(all.end(), more.begin(), more.end());
+        return read_case(sweep, all).meshes.front().wear_material;
+    };
+    const auto steel = *wear::find_wear_material("steel");
+    EXPECT_DOUBLE_EQ(read({}).bitter_deformation_factor, steel.bitter_deformation_factor);
+
+    auto harder = steel;
+    harder.vickers_hardness = 2.0;
+    EXPECT_DOUBLE_EQ(read({"wear_materials.hard.vickers_hardness=2.0"}).bitter_deformation_factor,
+                     wear::bitter_deformation_factor_from_oka(harder, 20.0, 1e-3));
+
+    const auto at_jet = read({"wear_materials.hard.bitter_deformation_factor=\"oka\"",
+                              "wear_materials.hard.bitter_calibration_speed=104.0"});
+    EXPECT_DOUBLE_EQ(at_jet.bitter_deformation_factor, wear::bitter_deformation_factor_from_oka(steel, 104.0, 1e-3));
+    EXPECT_EQ(at_jet.bitter_calibration_speed, 104.0);
+
+    const auto given = read({"wear_materials.hard.bitter_deformation_factor=3e10"});
+    EXPECT_EQ(given.bitter_deformation_factor, 3e10);
+    EXPECT_TRUE(std::isnan(given.bitter_calibration_speed));
 }
