@@ -95,7 +95,7 @@ TEST(Poiseuille, PeriodicChannelMatchesSeriesSolutionAndParabola) {
     const auto& ps = sim.particles();
     const grit::Index count = ps.size();
     double mass = 0.0;
-    std::map<std::int32_t, double> start_x;  // by particle id
+    std::map<grit::domain::ParticleId, double> start_x;  // by particle id
     for (grit::Index i = 0; i < count; ++i) {
         mass += ps.mass()[i];
         start_x[ps.id()[i]] = ps.position()[i][0];

@@ -25,7 +25,7 @@ struct Sample {
 TEST(Solids, TensionFollowsHookesLaw) {
     grit::sim::Simulation<2> sim(load_case("tension_bar_2d/case.toml"), in_memory());
     auto& ps = sim.particles();
-    std::map<std::int32_t, double> x0;
+    std::map<grit::domain::ParticleId, double> x0;
     for (grit::Index i = 0; i < ps.size(); ++i) x0[ps.id()[i]] = ps.position()[i][0];
     const double expected_modulus = 2.0e6 / (1.0 - 0.3975 * 0.3975);
     std::vector<Sample> samples;

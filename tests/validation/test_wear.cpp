@@ -186,7 +186,7 @@ TEST(PeltonBucket, JetSplitWithoutCrossingLeakOrDeadWaterAndWearMidBucket) {
     sheet.bin(3.0 * dx);
     double deepest = 0.0;    // the farthest any water got behind a cup's surface [m]
     int in_cusp = 0;         // water behind the sheet within c/2 of the splitter's plane (the wedge), at most
-    std::map<std::int32_t, int> cup_of;  // particle id -> -1 / +1: the cup it was seen deep in
+    std::map<grit::domain::ParticleId, int> cup_of;  // particle id -> -1 / +1: the cup it was seen deep in
     int crossed = 0;
     auto check = [&] {
         const auto& ps = sim.particles();

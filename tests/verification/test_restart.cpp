@@ -3,6 +3,7 @@
 // grains with contact history, Johnson-Cook and JH-2 solids with damage and erosion). Also: what a
 // checkpoint that does not fit the case is told.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <algorithm>
 #include <cstring>
@@ -221,6 +222,37 @@ TEST(Restart, CheckpointWithOtherPeriodicAxesIsRefused) {
         FAIL() << "a periodic checkpoint was accepted by a case without periodic axes";
     } catch (const grit::core::InputError& e) {
         EXPECT_NE(std::string(e.what()).find("domain.periodic"), std::string::npos) << e.what();
+    }
+    fs::remove(file);
+}
+
+// A checkpoint of an earlier format (version 3 had 32-bit ids counted in creation order) is refused with
+// the version that wrote it, not read in part.
+TEST(Restart, CheckpointOfAnEarlierFormatIsRefusedNamingTheGritThatWroteIt) {
+    const fs::path file = scratch_file("earlier.h5");
+    {
+        Simulation<2> s(grit::testing::load_case("hydrostatic_2d/case.toml"), grit::testing::in_memory());
+        s.advance_to(0.0);
+        s.save_checkpoint(file);
+    }
+    {  // as an earlier grit would have stamped it
+        const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        ASSERT_GE(f, 0);
+        const hid_t a = H5Aopen(f, "format_version", H5P_DEFAULT);
+        ASSERT_GE(a, 0);
+        const std::int64_t three = 3;
+        ASSERT_GE(H5Awrite(a, H5T_NATIVE_INT64, &three), 0);
+        H5Aclose(a);
+        H5Fclose(f);
+    }
+    Simulation<2> s(grit::testing::load_case("hydrostatic_2d/case.toml"), grit::testing::in_memory());
+    try {
+        s.load_checkpoint(file);
+        FAIL() << "a checkpoint of format version 3 was accepted";
+    } catch (const grit::core::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("format version 3, written by grit "), std::string::npos) << what;
+        EXPECT_NE(what.find("reads format version 4 only"), std::string::npos) << what;
     }
     fs::remove(file);
 }

@@ -69,7 +69,7 @@ TEST(SymmetryPlane, ImagesMirrorTheirSourcesAndStayOutOfOutputs) {
     const auto& ps = half.particles();
     const Index images = ps.image_count();
     ASSERT_GT(images, 100);
-    std::map<std::int32_t, Index> by_id;
+    std::map<grit::domain::ParticleId, Index> by_id;
     for (Index i = 0; i < ps.size(); ++i)
         if (!ps.is_image(i)) by_id[ps.id()[i]] = i;
     const auto* x = ps.position();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/domain/particle_id.hpp"
 #include "grit/particles/sph_particles.hpp"
 
 namespace grit::analysis {
@@ -21,7 +22,7 @@ namespace grit::analysis {
 /// (solid torn off before it failed, carried into an outlet or out of the domain).
 struct ErosionRecord {
     double time = 0.0;  ///< end of the step that removed it [s]
-    std::int32_t id = -1;
+    domain::ParticleId id = -1;
     std::int32_t material = 0;
     const char* cause = "";
     std::array<double, 3> position{};  ///< [m]

@@ -73,12 +73,12 @@ std::vector<typename AbrasiveInlet<Dim>::Grain> AbrasiveInlet<Dim>::emit(double 
         if (spec_.start + static_cast<double>(next_column_) * period_ - lead_time > std::min(end, spec_.stop)) break;
         const Draw d = draw(next_column_);
         if (d.entry_time - lead_time > end) break;  // this column's grain joins in a later step
-        ++next_column_;
+        const std::int64_t column = next_column_++;
         if (d.entry_time >= spec_.stop) break;
         const Vec velocity = direction_ * jet_velocity_ + motion_;
         // It crosses the section where the nozzle is at entry_time (upstream of it until then).
         const Vec at_entry = nozzle_ + motion_ * d.entry_time + d.offset;
-        out.push_back({at_entry + velocity * (end - d.entry_time), d.diameter, velocity});
+        out.push_back({column, at_entry + velocity * (end - d.entry_time), d.diameter, velocity});
     }
     return out;
 }

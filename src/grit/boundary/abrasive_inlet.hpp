@@ -22,6 +22,7 @@ public:
 
     /// One grain due to enter: where it is at the end of the step, its diameter and velocity.
     struct Grain {
+        std::int64_t column;  ///< its liquid column's index: the grain's serial (its id by origin)
         Vec position;
         double diameter;
         Vec velocity;

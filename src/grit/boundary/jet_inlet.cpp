@@ -8,8 +8,8 @@
 namespace grit::boundary {
 
 template <int Dim>
-JetInlet<Dim>::JetInlet(const io::InletSpec& spec, double spacing, double density, double mass)
-    : spec_(spec), spacing_(spacing), density_(density), mass_(mass), travelled_(spacing) {
+JetInlet<Dim>::JetInlet(const io::InletSpec& spec, std::int32_t index, double spacing, double density, double mass)
+    : spec_(spec), index_(index), spacing_(spacing), density_(density), mass_(mass), travelled_(spacing) {
     for (int k = 0; k < Dim; ++k) {
         position_[k] = spec.position[static_cast<std::size_t>(k)];
         direction_[k] = spec.direction[static_cast<std::size_t>(k)];
@@ -40,7 +40,8 @@ double JetInlet<Dim>::emit(particles::SphParticles<Dim>& ps, double t, double dt
     while (travelled_ >= spacing_) {
         travelled_ -= spacing_;
         const auto count = static_cast<Index>(layer_.size());
-        const Index first = ps.append(count);
+        // Slot k of layer L has serial L * count + k: its id does not depend on which process emits it.
+        const Index first = ps.append(count, {domain::IdKind::inlet, index_}, layers_++ * count);
         // The layer left the section travelled_ / velocity ago, from where the nozzle was then; it has
         // moved with the nozzle since, so it lies ahead of the nozzle's place at t + dt.
         const Vec nozzle = position_ + motion_ * (t + dt);

@@ -92,7 +92,7 @@ bool FluidGrainCoupling<Dim>::candidates_stale(const dem::GrainSet<Dim>& grains,
     if (particles.generation() != candidate_generation_ || static_cast<std::size_t>(n) != particle_at_search_.size() ||
         static_cast<std::size_t>(ng) != grain_at_search_.size())
         return true;
-    const std::int32_t* id = grains.id();
+    const domain::ParticleId* id = grains.id();
     for (Index i = 0; i < ng; ++i)
         if (id[i] != grain_ids_at_search_[static_cast<std::size_t>(i)]) return true;  // fed, left or re-sorted
     // A pair missing from the candidates was R_c,i + skin apart at the search: it can be within R_c,i now

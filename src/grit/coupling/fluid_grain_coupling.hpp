@@ -94,7 +94,7 @@ private:
     double skin_ = 0.0;
     std::uint64_t candidate_generation_ = ~std::uint64_t{0};  // the particle set's, at the search
     std::vector<Vec> particle_at_search_, grain_at_search_;
-    std::vector<std::int32_t> grain_ids_at_search_;
+    std::vector<domain::ParticleId> grain_ids_at_search_;
     long candidate_builds_ = 0;
     neighbors::CrossPairList<Dim> pairs_;        // grains near each fluid particle (rows by particle)
     std::vector<double> weight_;                 // W_ai, in the order of pairs_

@@ -16,6 +16,7 @@
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
 #include "grit/dem/grain_loop.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/io/hdf5_file.hpp"
 #include "grit/neighbors/half_lists.hpp"
 
@@ -35,7 +36,7 @@ public:
     /// Keeps the non-zero values of the current lists with their grain ids (before a rebuild or a
     /// reordering). `ids` are those of the n grains the lists were cut for (grains appended since have no
     /// history yet).
-    void save(const std::int32_t* ids, Index n, const neighbors::HalfLists& pairs) {
+    void save(const domain::ParticleId* ids, Index n, const neighbors::HalfLists& pairs) {
         saved_rows_.clear();
         saved_partner_.clear();
         saved_value_.clear();
@@ -57,16 +58,16 @@ public:
 
     /// Sizes the values to the new lists and fills each entry with the saved value of its pair of ids,
     /// negated where the pair's order turned round.
-    void restore(const std::int32_t* ids, const neighbors::HalfLists& pairs) {
+    void restore(const domain::ParticleId* ids, const neighbors::HalfLists& pairs) {
         values_.assign(pairs.upper_size(), Vec::zero());
         if (saved_rows_.empty()) return;
         // The saved row of grain `owner` (null if it holds none), and the value of its pair with `partner`.
-        auto row_of = [&](std::int32_t owner) -> const SavedRow* {
+        auto row_of = [&](domain::ParticleId owner) -> const SavedRow* {
             const auto row = std::lower_bound(saved_rows_.begin(), saved_rows_.end(), owner,
-                                              [](const SavedRow& r, std::int32_t id) { return r.owner < id; });
+                                              [](const SavedRow& r, domain::ParticleId id) { return r.owner < id; });
             return row == saved_rows_.end() || row->owner != owner ? nullptr : &*row;
         };
-        auto find = [&](const SavedRow* row, std::int32_t partner) -> const Vec* {
+        auto find = [&](const SavedRow* row, domain::ParticleId partner) -> const Vec* {
             if (!row) return nullptr;
             for (Index s = row->first; s < row->last; ++s)
                 if (saved_partner_[static_cast<std::size_t>(s)] == partner)
@@ -76,7 +77,7 @@ public:
         for_each_grain(pairs.particle_count(), [&](Index i) {
             const SavedRow* own = row_of(ids[i]);
             for (Index k = pairs.upper_begin(i); k < pairs.upper_end(i); ++k) {
-                const std::int32_t partner = ids[pairs.upper()[k]];
+                const domain::ParticleId partner = ids[pairs.upper()[k]];
                 if (const Vec* v = find(own, partner))
                     values_[static_cast<std::size_t>(k)] = *v;
                 else if (const Vec* w = find(row_of(partner), ids[i]))
@@ -108,9 +109,9 @@ public:
         const auto rows = group.read_int64("saved_rows", 3, n);
         saved_rows_.clear();
         for (std::size_t r = 0; r < n; ++r)
-            saved_rows_.push_back({static_cast<std::int32_t>(rows[3 * r]), static_cast<Index>(rows[3 * r + 1]),
+            saved_rows_.push_back({rows[3 * r], static_cast<Index>(rows[3 * r + 1]),
                                    static_cast<Index>(rows[3 * r + 2])});
-        saved_partner_ = group.read_int32("saved_partner", 1, n);
+        saved_partner_ = group.read_int64("saved_partner", 1, n);
         saved_value_ = to_vecs(group.read_doubles("saved_value", Dim, n));
     }
 
@@ -123,12 +124,12 @@ public:
 
 private:
     struct SavedRow {
-        std::int32_t owner;
+        domain::ParticleId owner;
         Index first, last;
     };
     std::vector<Vec> values_;
     std::vector<SavedRow> saved_rows_;
-    std::vector<std::int32_t> saved_partner_;
+    std::vector<domain::ParticleId> saved_partner_;
     std::vector<Vec> saved_value_;
 };
 

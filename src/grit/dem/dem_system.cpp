@@ -32,19 +32,26 @@ DemSystem<Dim>::DemSystem(DemParameters<Dim> parameters, std::vector<GrainMateri
 }
 
 template <int Dim>
-Index DemSystem<Dim>::add_grain(const Vec& x, double radius, std::int32_t material, const Vec& v) {
+Index DemSystem<Dim>::add_grain(domain::ParticleId id, const Vec& x, double radius, std::int32_t material,
+                                const Vec& v) {
     if (material < 0 || material >= static_cast<std::int32_t>(materials_.size()))
         throw core::InputError("grain material index " + std::to_string(material) + " out of range");
     if (!(radius > 0.0)) throw core::InputError("grain radius must be > 0 [m], got " + std::to_string(radius));
     lists_dirty_ = true;
     forces_ready_ = false;
-    return grains_.add(x, radius, materials_[static_cast<std::size_t>(material)], material, v);
+    return grains_.add(id, x, radius, materials_[static_cast<std::size_t>(material)], material, v);
 }
 
 template <int Dim>
-Index DemSystem<Dim>::inject_grain(const Vec& x, double radius, std::int32_t material, const Vec& v) {
+Index DemSystem<Dim>::add_grain(const Vec& x, double radius, std::int32_t material, const Vec& v) {
+    return add_grain(grains_.take_hand_built_id(), x, radius, material, v);
+}
+
+template <int Dim>
+Index DemSystem<Dim>::inject_grain(domain::ParticleId id, const Vec& x, double radius, std::int32_t material,
+                                   const Vec& v) {
     const bool ready = forces_ready_;
-    const Index i = add_grain(x, radius, material, v);
+    const Index i = add_grain(id, x, radius, material, v);
     grains_.force()[i] = parameters_.gravity * grains_.mass()[i];
     forces_ready_ = ready;
     return i;

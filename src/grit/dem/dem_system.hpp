@@ -65,13 +65,17 @@ public:
     const neighbors::HalfLists& pairs() const noexcept { return pairs_; }
     const ContactHistory<Dim>& contact_history() const noexcept { return history_; }
 
-    /// Adds one grain of material `material` (index) and returns its index (valid until the next step,
-    /// which may re-sort grains; use the `id` field to follow a grain).
+    /// Adds one grain of material `material` (index) with the id its source gave it (by origin,
+    /// domain/particle_id.hpp) and returns its index (valid until the next step, which may re-sort
+    /// grains; use the `id` field to follow a grain).
+    Index add_grain(domain::ParticleId id, const Vec& x, double radius, std::int32_t material,
+                    const Vec& v = Vec::zero());
+    /// The same for a system built by hand (tests, tools): ids in the order grains are added.
     Index add_grain(const Vec& x, double radius, std::int32_t material, const Vec& v = Vec::zero());
     /// Adds a grain during a run (a feed), before the step's force stages: its force starts at its
     /// weight and its contacts enter at the next force stage, while the forces the other grains hold
     /// stay valid (add_grain would have them recomputed, dropping what coupling stages added).
-    Index inject_grain(const Vec& x, double radius, std::int32_t material, const Vec& v);
+    Index inject_grain(domain::ParticleId id, const Vec& x, double radius, std::int32_t material, const Vec& v);
     /// Adds a plane wall; its history field `wall_history_<k>` joins the grain registry.
     void add_wall(const PlaneWall<Dim>& wall);
     /// Adds a triangle-mesh wall (3D only; InputError in 2D or for a material index out of range).

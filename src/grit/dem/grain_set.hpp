@@ -10,6 +10,7 @@
 #include "grit/core/vec.hpp"
 #include "grit/dem/grain_material.hpp"
 #include "grit/dem/spin.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/particles/field_registry.hpp"
 
 namespace grit::dem {
@@ -56,7 +57,7 @@ public:
     using SpinT = Spin<Dim>;
 
     GrainSet()
-        : id_(&fields_.add<std::int32_t>("id", -1, true)),
+        : id_(&fields_.add<domain::ParticleId>("id", -1, true)),
           position_(&fields_.add<Vec>("position", Vec::zero(), false)),
           velocity_(&fields_.add<Vec>("velocity", Vec::zero(), true)),
           angular_velocity_(&fields_.add<SpinT>("angular_velocity", zero_spin<Dim>(), true)),
@@ -69,10 +70,10 @@ public:
           collisions_(&fields_.add<std::int32_t>("collisions", 0, true)),
           grain_contact_(&fields_.add<std::int32_t>("grain_contact", 0, false)) {}
 
-    GrainSet(const GrainSet& o) : fields_(o.fields_), next_id_(o.next_id_) { rebind(); }
+    GrainSet(const GrainSet& o) : fields_(o.fields_), next_hand_built_(o.next_hand_built_) { rebind(); }
     GrainSet& operator=(const GrainSet& o) {
         fields_ = o.fields_;
-        next_id_ = o.next_id_;
+        next_hand_built_ = o.next_hand_built_;
         rebind();
         return *this;
     }
@@ -81,12 +82,13 @@ public:
     const particles::FieldRegistry& fields() const noexcept { return fields_; }
     Index size() const noexcept { return fields_.size(); }
 
-    /// Appends one grain of `material` (density from it) at rest unless v is given; returns its index.
-    Index add(const Vec& x, double radius, const GrainMaterial& material, std::int32_t material_index,
-              const Vec& v = Vec::zero()) {
+    /// Appends one grain of `material` (density from it) with the id its source gave it (by origin,
+    /// domain/particle_id.hpp), at rest unless v is given; returns its index.
+    Index add(domain::ParticleId id, const Vec& x, double radius, const GrainMaterial& material,
+              std::int32_t material_index, const Vec& v = Vec::zero()) {
         const Index i = size();
         fields_.resize(i + 1);
-        (*id_)[i] = next_id_++;
+        (*id_)[i] = id;
         (*position_)[i] = x;
         (*velocity_)[i] = v;
         (*radius_)[i] = radius;
@@ -95,21 +97,25 @@ public:
         (*material_)[i] = material_index;
         return i;
     }
+    /// Appends one grain to a set built by hand (tests, tools), numbered in the order of adding.
+    Index add(const Vec& x, double radius, const GrainMaterial& material, std::int32_t material_index,
+              const Vec& v = Vec::zero()) {
+        return add(take_hand_built_id(), x, radius, material, material_index, v);
+    }
+    /// The next id of a set built by hand.
+    domain::ParticleId take_hand_built_id() {
+        return domain::make_particle_id({domain::IdKind::hand_built, 0}, next_hand_built_++);
+    }
     /// Reorders and/or removes grains: new[i] = old[source[i]].
     void gather(const std::vector<Index>& source) { fields_.gather(source); }
 
-    /// Every saved field and the id counter into `group` (a checkpoint's grain set).
-    void save(io::Hdf5Group& group) const {
-        fields_.save(group);
-        group.write("next_id", static_cast<std::int64_t>(next_id_));
-    }
+    /// Every saved field into `group` (a checkpoint's grain set; ids come from their sources, which keep
+    /// their own counters).
+    void save(io::Hdf5Group& group) const { fields_.save(group); }
     /// Reads back what save() wrote; the set must have the same fields registered.
-    void load(const io::Hdf5Group& group) {
-        fields_.load(group);
-        next_id_ = static_cast<std::int32_t>(group.read_int("next_id"));
-    }
+    void load(const io::Hdf5Group& group) { fields_.load(group); }
 
-    const std::int32_t* id() const noexcept { return id_->data(); }
+    const domain::ParticleId* id() const noexcept { return id_->data(); }
     Vec* position() noexcept { return position_->data(); }
     Vec* velocity() noexcept { return velocity_->data(); }
     SpinT* angular_velocity() noexcept { return angular_velocity_->data(); }
@@ -147,7 +153,7 @@ public:
 
 private:
     void rebind() {
-        id_ = &fields_.get<std::int32_t>("id");
+        id_ = &fields_.get<domain::ParticleId>("id");
         position_ = &fields_.get<Vec>("position");
         velocity_ = &fields_.get<Vec>("velocity");
         angular_velocity_ = &fields_.get<SpinT>("angular_velocity");
@@ -162,7 +168,7 @@ private:
     }
 
     particles::FieldRegistry fields_;
-    particles::Field<std::int32_t>* id_;
+    particles::Field<domain::ParticleId>* id_;
     particles::Field<Vec>* position_;
     particles::Field<Vec>* velocity_;
     particles::Field<SpinT>* angular_velocity_;
@@ -174,7 +180,7 @@ private:
     particles::Field<std::int32_t>* material_;
     particles::Field<std::int32_t>* collisions_;
     particles::Field<std::int32_t>* grain_contact_;
-    std::int32_t next_id_ = 0;
+    std::int64_t next_hand_built_ = 0;
 };
 
 /// The `fixed` flags of the grains (1: held in place, [[grains]].fixed), or null when no grain is fixed

@@ -115,11 +115,11 @@ void validate(const PointCloud& cloud) {
                 "write_vtu: array '{}' has {} components (must be >= 1)", a.name, a.components));
         }
         const std::size_t expected = n * static_cast<std::size_t>(a.components);
-        const std::size_t actual = a.is_integer ? a.integer.size() : a.real.size();
+        const std::size_t actual = a.value_count();
         if (actual != expected) {
             throw std::invalid_argument(fmt::format(
                 "write_vtu: array '{}' has {} {} values, expected {} ({} points x {} components)",
-                a.name, actual, a.is_integer ? "Int32" : "Float64", expected, n, a.components));
+                a.name, actual, a.vtk_type(), expected, n, a.components));
         }
     }
 }
@@ -136,8 +136,7 @@ std::vector<Block> grid_blocks(std::uint64_t points, std::uint64_t links, std::u
     blocks.push_back({"UInt8", "types", 1, cells * sizeof(std::uint8_t), 0});
     for (const PointArray& a : arrays) {
         const std::uint64_t count = items * static_cast<std::uint64_t>(a.components);
-        blocks.push_back({a.is_integer ? "Int32" : "Float64", a.name, a.components,
-                          count * (a.is_integer ? sizeof(std::int32_t) : sizeof(double)), 0});
+        blocks.push_back({a.vtk_type(), a.name, a.components, count * a.value_bytes(), 0});
     }
     std::uint64_t offset = 0;
     for (Block& b : blocks) {
@@ -246,11 +245,7 @@ void write_vtu(const std::filesystem::path& file, const PointCloud& cloud) {
             const PointArray& a = cloud.arrays[i];
             const Block& b = blocks[4 + i];
             write_count(out, b.bytes);
-            if (a.is_integer) {
-                write_raw(out, a.integer.data(), b.bytes);
-            } else {
-                write_raw(out, a.real.data(), b.bytes);
-            }
+            write_raw(out, a.data(), b.bytes);
         }
 
         static constexpr std::string_view tail = "\n  </AppendedData>\n</VTKFile>\n";
@@ -290,8 +285,7 @@ void write_surface_vtu(const std::filesystem::path& file, const TriangleSurface&
         for (std::size_t i = 0; i < surface.cell_arrays.size(); ++i) {
             const PointArray& a = surface.cell_arrays[i];
             write_count(out, blocks[4 + i].bytes);
-            if (a.is_integer) write_raw(out, a.integer.data(), blocks[4 + i].bytes);
-            else write_raw(out, a.real.data(), blocks[4 + i].bytes);
+            write_raw(out, a.data(), blocks[4 + i].bytes);
         }
         static constexpr std::string_view tail = "\n  </AppendedData>\n</VTKFile>\n";
         out.write(tail.data(), static_cast<std::streamsize>(tail.size()));

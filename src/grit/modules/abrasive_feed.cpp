@@ -1,6 +1,8 @@
 // Abrasive feed module.
 #include "grit/modules/abrasive_feed.hpp"
 
+#include "grit/domain/particle_id.hpp"
+
 namespace grit::modules {
 
 template <int Dim>
@@ -18,7 +20,9 @@ template <int Dim>
 void AbrasiveFeedModule<Dim>::feed() {
     const auto material = static_cast<std::int32_t>(setup_.spec.abrasive.material);
     for (const auto& g : inlet_.emit(state_.clock.time, state_.clock.dt)) {
-        state_.grains->inject_grain(g.position, 0.5 * g.diameter, material, g.velocity);
+        // One grain per column: the column's index is its serial.
+        state_.grains->inject_grain(domain::make_particle_id({domain::IdKind::abrasive_feed, 0}, g.column), g.position,
+                                    0.5 * g.diameter, material, g.velocity);
         ++injected_;
     }
 }

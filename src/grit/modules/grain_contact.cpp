@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/domain/particle_id.hpp"
 #include "grit/modules/grains.hpp"
 
 namespace grit::modules {
@@ -110,10 +111,10 @@ void GrainContactModule<Dim>::warn_of_grains_starting_in_contact() {
     const auto& x = grains.position()[first];
     spdlog::warn(
         "{} grain(s) start in contact with SPH wall or solid particles (closer than the particle spacing "
-        "{:.4g} m to a grain's surface; the first: grain {} at ({}) m): the contact of eqs. (12)-(14) pushes "
-        "them out in a step, which can throw them off fast. Place grains at least a spacing from walls "
+        "{:.4g} m to a grain's surface; the first: grain {} ({}) at ({}) m): the contact of eqs. (12)-(14) "
+        "pushes them out in a step, which can throw them off fast. Place grains at least a spacing from walls "
         "and solids.",
-        count, setup_.spec.particle_spacing, grains.id()[first], fmt::join(std::vector<double>(x.c, x.c + Dim), ", "));
+        count, setup_.spec.particle_spacing, grains.id()[first], domain::describe_id(grains.id()[first]), fmt::join(std::vector<double>(x.c, x.c + Dim), ", "));
 }
 
 template class GrainContactModule<2>;

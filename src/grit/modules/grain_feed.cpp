@@ -4,6 +4,7 @@
 #include <random>
 
 #include "grit/dem/grain_set.hpp"
+#include "grit/domain/particle_id.hpp"
 
 namespace grit::modules {
 
@@ -76,7 +77,9 @@ void GrainFeedModule<Dim>::insert(std::size_t f, std::int64_t k) {
                 placed = core::norm2(x - centre[j]) >= reach * reach;
             }
             if (placed) {
-                system.inject_grain(x, 0.5 * d, s.material, velocity);
+                // The feed's fill number (how many grains it placed before) is the grain's serial.
+                const auto id = domain::make_particle_id({domain::IdKind::grain_feed, static_cast<std::int32_t>(f)}, fed_[f]);
+                system.inject_grain(id, x, 0.5 * d, s.material, velocity);
                 centre.push_back(x);
                 radius.push_back(0.5 * d);
                 ++fed_[f];

@@ -8,6 +8,7 @@
 
 #include "grit/core/error.hpp"
 #include "grit/dem/grain_fill.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/io/vtu_writer.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
@@ -57,7 +58,8 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
     bool any_fixed = false;
     for (const auto& b : spec.grains) any_fixed |= b.fixed;
     if (any_fixed) system.grains().fields().template add<std::int32_t>("fixed", 0, true);
-    for (const auto& b : spec.grains) {
+    for (std::size_t block = 0; block < spec.grains.size(); ++block) {
+        const auto& b = spec.grains[block];
         std::vector<dem::GrainSeed<Dim>> seeds;
         if (b.arrangement == "single") {
             std::mt19937_64 rng(b.seed);
@@ -72,7 +74,8 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
                                                    b.key, seeds.size(), b.count));
         }
         if (seeds.empty()) throw core::InputError(fmt::format("{}: the arrangement holds no grain", b.key));
-        for (const auto& s : seeds) {
+        for (std::size_t serial = 0; serial < seeds.size(); ++serial) {
+            const auto& s = seeds[serial];
             for (int k = 0; k < Dim; ++k)
                 if (!setup.periodic_box.periodic[k] &&
                     (s.position[k] < spec.domain_min[static_cast<std::size_t>(k)] ||
@@ -80,7 +83,10 @@ GrainsModule<Dim>::GrainsModule(sim::State<Dim>& state, const sim::RunSetup<Dim>
                     throw core::InputError(fmt::format(
                         "{}: a grain at ({}) lies outside the domain (domain.min/domain.max); enlarge the domain",
                         b.key, fmt::join(std::vector<double>(s.position.c, s.position.c + Dim), ", ")));
-            const Index i = system.add_grain(s.position, 0.5 * s.diameter, b.material, to_vec<Dim>(b.velocity));
+            // The seed's index in its block's fill is its serial.
+            const auto id = domain::make_particle_id({domain::IdKind::grain_block, static_cast<std::int32_t>(block)},
+                                                     static_cast<std::int64_t>(serial));
+            const Index i = system.add_grain(id, s.position, 0.5 * s.diameter, b.material, to_vec<Dim>(b.velocity));
             if (b.fixed) system.grains().fields().template get<std::int32_t>("fixed")[i] = 1;
         }
     }
@@ -188,7 +194,7 @@ std::string GrainsModule<Dim>::check_health() const {
     const std::string what = !core::all_finite(x[bad]) ? "position is not finite"
                              : !core::all_finite(v[bad]) ? "velocity is not finite"
                                                          : "escaped the domain (domain.min/domain.max)";
-    return fmt::format("grain {} at ({:.6g}): {}", grains.id()[bad],
+    return fmt::format("grain {} ({}) at ({:.6g}): {}", grains.id()[bad], domain::describe_id(grains.id()[bad]),
                        fmt::join(std::vector<double>(x[bad].c, x[bad].c + Dim), ", "), what);
 }
 

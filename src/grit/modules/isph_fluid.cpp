@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include "grit/domain/particle_id.hpp"
 #include "grit/modules/coupling.hpp"
 #include "grit/parallel/parallel.hpp"
 
@@ -169,9 +170,9 @@ void IsphModule<Dim>::project() {
     if (last_.bad_row >= 0) {
         const Index a = last_.bad_row;
         failure_ = fmt::format(
-            "the pressure Poisson system has a non-finite entry in the row of the {} particle with id {} "
-            "(density {:g}, position ({}))",
-            ps.phase()[a] == fluid_phase ? "fluid" : "wall", ps.id()[a], ps.density()[a],
+            "the pressure Poisson system has a non-finite entry in the row of the {} particle with id {} ({}; "
+            "density {:g}, position ({}))",
+            ps.phase()[a] == fluid_phase ? "fluid" : "wall", ps.id()[a], domain::describe_id(ps.id()[a]), ps.density()[a],
             fmt::join(ps.position()[a].c, ps.position()[a].c + Dim, ", "));
         return;
     }

@@ -115,9 +115,9 @@ void MeshWearModule<Dim>::write_output(const sim::OutputPlace& place) {
                     s.points.push_back(corners[t][c][k]);
                 s.triangles.push_back(static_cast<std::int64_t>(3 * t + c));
             }
-        io::PointArray mass{"wear_mass", 1, false, {}, {}}, depth{"wear_depth", 1, false, {}, {}},
-            count{"impact_count", 1, true, {}, {}}, angle{"mean_impact_angle", 1, false, {}, {}},
-            speed{"mean_impact_speed", 1, false, {}, {}}, which{"mesh", 1, true, {}, {}};
+        auto mass = io::PointArray::reals("wear_mass", 1), depth = io::PointArray::reals("wear_depth", 1),
+             count = io::PointArray::integers("impact_count", 1), angle = io::PointArray::reals("mean_impact_angle", 1),
+             speed = io::PointArray::reals("mean_impact_speed", 1), which = io::PointArray::integers("mesh", 1);
         for (std::size_t t = 0; t < corners.size(); ++t) {
             const auto [m, local] = walls.locate(static_cast<std::int32_t>(t));
             const double rho = meshes[m].wear_material.density;

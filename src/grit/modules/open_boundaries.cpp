@@ -16,7 +16,7 @@ OpenBoundariesModule<Dim>::OpenBoundariesModule(sim::State<Dim>& state, const si
     : state_(state), setup_(setup) {
     for (const auto& in : setup.spec.inlets) {
         const auto& m = setup.spec.materials[static_cast<std::size_t>(in.material)];
-        inlets_.emplace_back(in, setup.spacing, m.reference_density(),
+        inlets_.emplace_back(in, static_cast<std::int32_t>(inlets_.size()), setup.spacing, m.reference_density(),
                              m.reference_density() * std::pow(setup.spacing, Dim));
     }
 }
@@ -101,8 +101,13 @@ void OpenBoundariesModule<Dim>::apply() {
 template <int Dim>
 void OpenBoundariesModule<Dim>::save(io::Hdf5Group& group) const {
     std::vector<double> travelled;
-    for (const auto& in : inlets_) travelled.push_back(in.travelled());
+    std::vector<std::int64_t> layers;
+    for (const auto& in : inlets_) {
+        travelled.push_back(in.travelled());
+        layers.push_back(in.layers());
+    }
     group.write("inlet_travelled", travelled.data(), travelled.size(), 1);
+    group.write("inlet_layers", layers.data(), layers.size(), 1);
 }
 
 template <int Dim>
@@ -110,7 +115,12 @@ void OpenBoundariesModule<Dim>::load(const io::Hdf5Group& group) {
     std::size_t rows = 0;
     const auto travelled = group.read_doubles("inlet_travelled", 1, rows);
     if (rows != inlets_.size()) throw io::Hdf5Error(group.path() + ": the checkpoint has another number of inlets");
-    for (std::size_t k = 0; k < rows; ++k) inlets_[k].set_travelled(travelled[k]);
+    const auto layers = group.read_int64("inlet_layers", 1, rows);
+    if (rows != inlets_.size()) throw io::Hdf5Error(group.path() + ": the checkpoint has another number of inlets");
+    for (std::size_t k = 0; k < rows; ++k) {
+        inlets_[k].set_travelled(travelled[k]);
+        inlets_[k].set_layers(layers[k]);
+    }
 }
 
 template class OpenBoundariesModule<2>;

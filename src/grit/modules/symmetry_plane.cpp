@@ -4,11 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <unordered_map>
 #include <utility>
 
 #include "grit/core/error.hpp"
 #include "grit/dem/plane_wall.hpp"
+#include "grit/domain/id_index.hpp"
 
 namespace grit::modules {
 
@@ -81,7 +81,7 @@ void SymmetryPlaneModule<Dim>::make_images(particles::SphParticles<Dim>& ps) {
     std::vector<Index> made(near.size());
     for (std::size_t k = 0; k < near.size(); ++k) made[k] = first + static_cast<Index>(k);
     ps.fields().mirror_copy(near, made, axis);
-    std::int32_t* id = ps.id();
+    domain::ParticleId* id = ps.id();
     for (std::size_t k = 0; k < near.size(); ++k) id[made[k]] = Particles<Dim>::image_id(id[near[k]]);
 }
 
@@ -90,24 +90,24 @@ void SymmetryPlaneModule<Dim>::find_sources() {
     auto& ps = state_.particles;
     if (sources_generation_ == ps.generation()) return;
     std::vector<Index> images;
-    const std::int32_t* id = ps.id();
+    const domain::ParticleId* id = ps.id();
     const auto* x = ps.position();
-    std::unordered_map<std::int32_t, Index> near;
+    domain::IdIndex near;
     for (Index i = 0; i < ps.size(); ++i) {
         if (ps.is_image(i)) {
             images.push_back(i);
         } else if (x[i][axis] < 2.0 * depth_) {  // a source moves less than half a skin between builds
-            near.emplace(id[i], i);
+            near.add(id[i], i);
         }
     }
     halo_.clear();
     std::vector<Index> orphans;
     for (const Index image : images) {
-        const auto it = near.find(Particles<Dim>::image_source(id[image]));
-        if (it == near.end())
+        const Index source = near.find(Particles<Dim>::image_source(id[image]));
+        if (source < 0)
             orphans.push_back(image);
         else
-            halo_.add(it->second, image, domain::GhostTransform<Dim>::mirror(axis));
+            halo_.add(source, image, domain::GhostTransform<Dim>::mirror(axis));
     }
     if (!orphans.empty()) {  // their sources left (outlets, erosion): the images go too
         std::vector<Index> keep;
@@ -142,7 +142,7 @@ void SymmetryPlaneModule<Dim>::refresh() {
     }
     find_sources();
     halo_.forward(ps.fields(), ps.position());
-    std::int32_t* id = ps.id();
+    domain::ParticleId* id = ps.id();
     const auto& images = halo_.ghosts();
     const auto& sources = halo_.owners();
     for (std::size_t k = 0; k < images.size(); ++k) id[images[k]] = Particles<Dim>::image_id(id[sources[k]]);

@@ -117,8 +117,8 @@ public:
     }
 
 private:
-    // Every field type is an array of int32 or of doubles (Vec, SymTensor3, Spin): its scalar type and
-    // the number of scalars per particle.
+    // Every field type is an int32, an int64 (ids) or an array of doubles (Vec, SymTensor3, Spin): its
+    // scalar type and the number of scalars per particle.
     static T mirrored(T value, int axis) {
         if constexpr (std::is_same_v<T, core::Vec<2>> || std::is_same_v<T, core::Vec<3>>) {
             value[axis] = -value[axis];
@@ -130,7 +130,7 @@ private:
         }
         return value;
     }
-    using Scalar = std::conditional_t<std::is_same_v<T, std::int32_t>, std::int32_t, double>;
+    using Scalar = std::conditional_t<std::is_integral_v<T>, T, double>;
     static constexpr std::size_t components = sizeof(T) / sizeof(Scalar);
     static_assert(sizeof(T) % sizeof(Scalar) == 0 && std::is_trivially_copyable_v<T>);
 
@@ -147,6 +147,10 @@ void Field<T>::append_output(io::PointCloud& cloud, const std::int32_t* phase, c
     } else if constexpr (std::is_same_v<T, std::int32_t>) {
         a.is_integer = true;
         a.integer = values_;
+    } else if constexpr (std::is_same_v<T, std::int64_t>) {
+        a.is_integer = true;
+        a.is_int64 = true;
+        a.integer64 = values_;
     } else if constexpr (std::is_same_v<T, core::Vec<2>> || std::is_same_v<T, core::Vec<3>>) {
         constexpr int dim = std::is_same_v<T, core::Vec<2>> ? 2 : 3;
         a.components = 3;
@@ -181,6 +185,7 @@ void Field<T>::load(const io::Hdf5Group& group, Index size) {
     std::size_t rows = 0;
     std::vector<Scalar> raw;
     if constexpr (std::is_same_v<Scalar, double>) raw = group.read_doubles(name(), components, rows);
+    else if constexpr (std::is_same_v<Scalar, std::int64_t>) raw = group.read_int64(name(), components, rows);
     else raw = group.read_int32(name(), components, rows);
     if (rows != static_cast<std::size_t>(size))
         throw io::Hdf5Error(group.path() + "/" + name() + ": " + std::to_string(rows) + " rows, expected " +

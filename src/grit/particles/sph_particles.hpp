@@ -2,15 +2,15 @@
 // the same neighbour loops (fluid-solid interaction is SPH interaction, first seed paper section 2).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
-#include <limits>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "grit/core/types.hpp"
 #include "grit/core/vec.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/particles/field_registry.hpp"
 
 namespace grit::particles {
@@ -32,15 +32,15 @@ public:
           mass_(&fields_.add<double>("mass", 0.0, true)),
           phase_(&fields_.add<std::int32_t>("phase", 0, true)),
           material_(&fields_.add<std::int32_t>("material", 0, true)),
-          id_(&fields_.add<std::int32_t>("id", -1, true)) {}
+          id_(&fields_.add<domain::ParticleId>("id", -1, true)) {}
 
     SphParticles(const SphParticles& o)
-        : fields_(o.fields_), next_id_(o.next_id_), generation_(o.generation_), removal_(o.removal_) {
+        : fields_(o.fields_), next_hand_built_(o.next_hand_built_), generation_(o.generation_), removal_(o.removal_) {
         rebind();
     }
     SphParticles& operator=(const SphParticles& o) {
         fields_ = o.fields_;
-        next_id_ = o.next_id_;
+        next_hand_built_ = o.next_hand_built_;
         generation_ = o.generation_;
         removal_ = o.removal_;
         rebind();
@@ -51,15 +51,29 @@ public:
     const FieldRegistry& fields() const noexcept { return fields_; }
     Index size() const noexcept { return fields_.size(); }
 
-    /// Grows the set by n particles (fields take their fill values, `id` the next free identifiers) and
-    /// returns the first new index.
-    Index append(Index n) {
+    /// Grows the set by n particles made by `source` with serials first_serial, first_serial + 1, ...
+    /// (their ids by origin, domain/particle_id.hpp; fields take their fill values) and returns the first
+    /// new index.
+    Index append(Index n, domain::IdSource source, std::int64_t first_serial) {
+        std::vector<std::int64_t> serials(static_cast<std::size_t>(n));
+        for (Index k = 0; k < n; ++k) serials[static_cast<std::size_t>(k)] = first_serial + k;
+        return append(source, serials);
+    }
+    /// Grows the set by one particle per serial, made by `source` (a part of a block: the serials of the
+    /// lattice points kept), and returns the first new index.
+    Index append(domain::IdSource source, const std::vector<std::int64_t>& serials) {
         const Index first = size();
-        if (next_id_ + n > std::numeric_limits<std::int32_t>::max())
-            throw std::overflow_error("particle ids exhausted: more than 2^31 particles created in one run");
-        fields_.resize(first + n);
-        for (Index i = first; i < first + n; ++i) (*id_)[i] = static_cast<std::int32_t>(next_id_++);
+        std::vector<domain::ParticleId> ids(serials.size());
+        for (std::size_t k = 0; k < serials.size(); ++k) ids[k] = domain::make_particle_id(source, serials[k]);
+        fields_.resize(first + static_cast<Index>(serials.size()));
+        std::copy(ids.begin(), ids.end(), id_->data() + first);
         ++generation_;
+        return first;
+    }
+    /// Grows a set built by hand (tests, tools) by n particles, numbered in the order of appending.
+    Index append(Index n) {
+        const Index first = append(n, {domain::IdKind::hand_built, 0}, next_hand_built_);
+        next_hand_built_ += n;
         return first;
     }
     /// Grows the set by n mirror images (a symmetry plane's ghosts, modules/symmetry_plane.*): they take
@@ -72,9 +86,9 @@ public:
     }
     /// The id of the mirror image of the particle with id `source` (negative, so every module can tell an
     /// image from a particle: images are not removed, counted or written for themselves).
-    static constexpr std::int32_t image_id(std::int32_t source) noexcept { return -2 - source; }
-    static constexpr std::int32_t image_source(std::int32_t image) noexcept { return -2 - image; }
-    static constexpr bool is_image_id(std::int32_t id) noexcept { return id <= -2; }
+    static constexpr domain::ParticleId image_id(domain::ParticleId source) noexcept { return -2 - source; }
+    static constexpr domain::ParticleId image_source(domain::ParticleId image) noexcept { return -2 - image; }
+    static constexpr bool is_image_id(domain::ParticleId id) noexcept { return id <= -2; }
     bool is_image(Index i) const noexcept { return is_image_id((*id_)[i]); }
     /// How many images the set holds.
     Index image_count() const noexcept {
@@ -123,18 +137,12 @@ public:
     /// Changes each time particles are added, removed or reordered: per-particle data kept outside the
     /// registry (neighbour lists, per-step scratch) records it and is valid while it is unchanged.
     std::uint64_t generation() const noexcept { return generation_; }
-    /// The next free particle id (64-bit counter; ids are written as int32 and checked against it).
-    std::int64_t next_id() const noexcept { return next_id_; }
-
-    /// Every saved field and the id counter into `group` (a checkpoint's particle set).
-    void save(io::Hdf5Group& group) const {
-        fields_.save(group);
-        group.write("next_id", next_id_);
-    }
+    /// Every saved field into `group` (a checkpoint's particle set; ids come from their sources, which
+    /// keep their own counters).
+    void save(io::Hdf5Group& group) const { fields_.save(group); }
     /// Reads back what save() wrote; the set must have the same fields registered.
     void load(const io::Hdf5Group& group) {
         fields_.load(group);
-        next_id_ = group.read_int("next_id");
         ++generation_;
     }
 
@@ -151,9 +159,10 @@ public:
     double* mass() noexcept { return mass_->data(); }
     std::int32_t* phase() noexcept { return phase_->data(); }
     std::int32_t* material() noexcept { return material_->data(); }
-    std::int32_t* id() noexcept { return id_->data(); }
-    /// A particle's identifier: unique, kept through sorting and removal (for tracking particles).
-    const std::int32_t* id() const noexcept { return id_->data(); }
+    domain::ParticleId* id() noexcept { return id_->data(); }
+    /// A particle's identifier by origin: unique, kept through sorting, removal and (over many processes)
+    /// migration (for tracking particles and finding them again).
+    const domain::ParticleId* id() const noexcept { return id_->data(); }
 
     const Vec* position() const noexcept { return position_->data(); }
     const Vec* velocity() const noexcept { return velocity_->data(); }
@@ -196,7 +205,7 @@ private:
         mass_ = &fields_.get<double>("mass");
         phase_ = &fields_.get<std::int32_t>("phase");
         material_ = &fields_.get<std::int32_t>("material");
-        id_ = &fields_.get<std::int32_t>("id");
+        id_ = &fields_.get<domain::ParticleId>("id");
     }
 
     FieldRegistry fields_;
@@ -211,8 +220,8 @@ private:
     Field<double>* mass_;
     Field<std::int32_t>* phase_;
     Field<std::int32_t>* material_;
-    Field<std::int32_t>* id_;
-    std::int64_t next_id_ = 0;
+    Field<domain::ParticleId>* id_;
+    std::int64_t next_hand_built_ = 0;
     std::uint64_t generation_ = 0;
     // The removals since generation `from`, up to `to` (the current one while nothing else changed).
     struct Removal {

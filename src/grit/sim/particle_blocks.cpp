@@ -19,8 +19,8 @@ namespace grit::sim {
 namespace {
 
 template <int Dim>
-void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, Phase phase, double dx,
-               particles::SphParticles<Dim>& particles) {
+void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, domain::IdSource source, Phase phase, double dx,
+               particles::SphParticles<Dim>& particles, const LatticeFilter<Dim>& keep) {
     using Vec = core::Vec<Dim>;
     WallNormals<Dim> normals;  // thin walls: each particle's wall normal (ThinWallsModule)
     const auto points = lattice_points<Dim>(b.shape, dx, &normals);
@@ -40,10 +40,17 @@ void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, Phase phase, do
             top = std::max(top, -core::dot(g, x) / g_norm);
         top += 0.5 * dx;
     }
-    const Index first = particles.append(static_cast<Index>(points.size()));
+    // A lattice point's index in its block is its serial, kept or not: the ids of a part are those of
+    // the whole block.
+    std::vector<std::int64_t> serials;
+    serials.reserve(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+        if (!keep || keep(points[k])) serials.push_back(static_cast<std::int64_t>(k));
+    const Index first = particles.append(source, serials);
     double* p = particles.pressure();
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        const Index i = first + static_cast<Index>(k);
+    for (std::size_t s = 0; s < serials.size(); ++s) {
+        const auto k = static_cast<std::size_t>(serials[s]);
+        const Index i = first + static_cast<Index>(s);
         Vec v = phase != Phase::wall ? core::to_vec<Dim>(b.velocity) : Vec::zero();
         if (b.velocity_profile == "cantilever_mode")
             v[1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
@@ -56,21 +63,25 @@ void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, Phase phase, do
         auto& fields = particles.fields();
         Vec* n = fields.template get<Vec>(modules::ThinWallsModule<Dim>::normal_field).data();
         std::int32_t* far = fields.template get<std::int32_t>(modules::ThinWallsModule<Dim>::far_field).data();
-        std::copy(normals.normal.begin(), normals.normal.end(), n + first);
-        std::copy(normals.far_side.begin(), normals.far_side.end(), far + first);
+        for (std::size_t s = 0; s < serials.size(); ++s) {
+            n[first + static_cast<Index>(s)] = normals.normal[static_cast<std::size_t>(serials[s])];
+            far[first + static_cast<Index>(s)] = normals.far_side[static_cast<std::size_t>(serials[s])];
+        }
     }
 }
 
 }  // namespace
 
 template <int Dim>
-void add_particle_blocks(const io::CaseSpec& spec, double dx, particles::SphParticles<Dim>& particles) {
-    for (const auto& f : spec.fluids)
-        add_block(spec, f, Phase::fluid, dx, particles);
-    for (const auto& s : spec.solids)
-        add_block(spec, s, Phase::solid, dx, particles);
-    for (const auto& w : spec.walls)
-        add_block(spec, w, Phase::wall, dx, particles);
+void add_particle_blocks(const io::CaseSpec& spec, double dx, particles::SphParticles<Dim>& particles,
+                         const LatticeFilter<Dim>& keep) {
+    auto add_all = [&](const std::vector<io::BlockSpec>& blocks, domain::IdKind kind, Phase phase) {
+        for (std::size_t k = 0; k < blocks.size(); ++k)
+            add_block(spec, blocks[k], {kind, static_cast<std::int32_t>(k)}, phase, dx, particles, keep);
+    };
+    add_all(spec.fluids, domain::IdKind::fluid_block, Phase::fluid);
+    add_all(spec.solids, domain::IdKind::solid_block, Phase::solid);
+    add_all(spec.walls, domain::IdKind::wall_block, Phase::wall);
 }
 
 template <int Dim>
@@ -86,8 +97,10 @@ void check_and_wrap_into_domain(const io::CaseSpec& spec, const neighbors::Perio
         for (Index i = 0; i < particles.size(); ++i) x[i] = box.wrap(x[i]);
 }
 
-template void add_particle_blocks<2>(const io::CaseSpec&, double, particles::SphParticles<2>&);
-template void add_particle_blocks<3>(const io::CaseSpec&, double, particles::SphParticles<3>&);
+template void add_particle_blocks<2>(const io::CaseSpec&, double, particles::SphParticles<2>&,
+                                     const LatticeFilter<2>&);
+template void add_particle_blocks<3>(const io::CaseSpec&, double, particles::SphParticles<3>&,
+                                     const LatticeFilter<3>&);
 template void check_and_wrap_into_domain<2>(const io::CaseSpec&, const neighbors::PeriodicBox<2>&,
                                             particles::SphParticles<2>&);
 template void check_and_wrap_into_domain<3>(const io::CaseSpec&, const neighbors::PeriodicBox<3>&,

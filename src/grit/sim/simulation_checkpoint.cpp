@@ -22,7 +22,7 @@ namespace {
 // 2: grain-grain contact histories are held by the grain of lower index (was: lower id), one entry per
 // pair of the cut lists (dem::ContactHistory). 3: grains carry `collisions` and `grain_contact`, the grains
 // module the collisions of the grains that left.
-constexpr std::int64_t checkpoint_format_version = 3;
+constexpr std::int64_t checkpoint_format_version = 4;  // 4: 64-bit ids by origin, the inlets' layer counts
 
 std::string read_text(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -201,9 +201,10 @@ void Simulation<Dim>::load_checkpoint(const std::filesystem::path& file) {
             throw core::InputError(where + ": not a grit checkpoint");
         const auto version_found = h5.read_int("format_version");
         if (version_found != checkpoint_format_version)
-            throw core::InputError(fmt::format("{}: format version {}, this grit reads version {} (grit {} wrote it)",
-                                               where, version_found, checkpoint_format_version,
-                                               h5.read_string("grit_version")));
+            throw core::InputError(fmt::format(
+                "{}: format version {}, written by grit {}; this grit ({}) reads format version {} only. Restart "
+                "it with the grit that wrote it, or run the case again from its start",
+                where, version_found, h5.read_string("grit_version"), version, checkpoint_format_version));
         const std::string case_name = h5.read_string("case_name");
         if (case_name != spec_.name)
             throw core::InputError(fmt::format("{}: written by case '{}', not '{}'", where, case_name, spec_.name));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "grit/core/error.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/io/vtu_writer.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sim/geometry.hpp"
@@ -50,7 +51,8 @@ std::string Simulation<Dim>::find_unhealthy() const {
                                core::norm(v[bad]), setup_.max_speed);
         else
             what = "escaped the domain (domain.min/domain.max)";
-        what = fmt::format("{} particle {} at ({:.6g}): {}", phase_name(ph[bad]), bad,
+        what = fmt::format("{} particle {} ({}) at ({:.6g}): {}", phase_name(ph[bad]), ps.id()[bad],
+                           domain::describe_id(ps.id()[bad]),
                            fmt::join(std::vector<double>(x[bad].c, x[bad].c + Dim), ", "), what);
     }
     for (auto it = modules_.begin(); what.empty() && it != modules_.end(); ++it) what = (*it)->check_health();

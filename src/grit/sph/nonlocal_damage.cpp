@@ -44,7 +44,7 @@ template <int Dim>
 void NonlocalDamage<Dim>::rebuild(const particles::SphParticles<Dim>& ps) {
     // Slots in ascending id: the rows of the pair list, and so the sums, follow the ids, which neither a
     // reordering of the particles nor a restart changes.
-    const std::int32_t* id = ps.id();
+    const domain::ParticleId* id = ps.id();
     members_.clear();
     for (Index i = 0; i < ps.size(); ++i)
         if (is_member(ps, i)) members_.push_back(i);
@@ -85,7 +85,7 @@ template <int Dim>
 bool NonlocalDamage<Dim>::relocate(const particles::SphParticles<Dim>& ps) {
     // The members found again by id after a reordering; a new member (a particle that became an image)
     // needs a new list.
-    const std::int32_t* id = ps.id();
+    const domain::ParticleId* id = ps.id();
     std::fill(members_.begin(), members_.end(), Index{-1});
     for (Index i = 0; i < ps.size(); ++i) {
         if (!is_member(ps, i)) continue;

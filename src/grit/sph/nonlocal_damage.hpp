@@ -58,7 +58,7 @@ private:
     /// Per slot (the members in ascending id at the build): its particle index now (-1: gone since).
     std::vector<Index> members_;
     std::vector<Index> source_slot_;  ///< per slot: the slot whose increment it carries (an image's source)
-    std::unordered_map<std::int32_t, Index> slot_of_id_;
+    std::unordered_map<domain::ParticleId, Index> slot_of_id_;
     std::vector<core::Vec<Dim>> built_at_;  ///< members' positions at the build
     std::vector<double> radius_;            ///< per member: its material's length
     neighbors::CrossPairList<Dim> pairs_;   ///< between slots, within length + skin

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/domain/particle_id.hpp"
 #include "grit/io/hdf5_file.hpp"
 
 namespace grit::wear {
@@ -19,7 +20,7 @@ namespace grit::wear {
 /// [degrees] (90 = normal).
 struct ImpactRecord {
     double time = 0.0;
-    std::int32_t grain = 0;  ///< persistent grain id
+    domain::ParticleId grain = 0;  ///< persistent grain id (by origin, domain/particle_id.hpp)
     std::string target;
     double speed = 0.0;  ///< [m/s]
     double angle = 0.0;  ///< [deg]

@@ -17,6 +17,7 @@
 
 using namespace grit::dem;
 using grit::Index;
+using grit::domain::ParticleId;
 using grit::core::Vec;
 
 namespace {
@@ -43,10 +44,10 @@ DemSystem<3> settling_box(const std::string& law, int n_side, double s = 0.0033)
 }
 
 /// Tangential history of every listed pair, keyed by (grain id, partner id).
-std::map<std::pair<int, int>, std::array<double, 3>> history_by_ids(const DemSystem<3>& sys) {
-    std::map<std::pair<int, int>, std::array<double, 3>> m;
+std::map<std::pair<ParticleId, ParticleId>, std::array<double, 3>> history_by_ids(const DemSystem<3>& sys) {
+    std::map<std::pair<ParticleId, ParticleId>, std::array<double, 3>> m;
     const auto& pairs = sys.pairs();
-    const int* id = sys.grains().id();
+    const ParticleId* id = sys.grains().id();
     for (Index i = 0; i < pairs.particle_count(); ++i)
         for (Index k = pairs.upper_begin(i); k < pairs.upper_end(i); ++k) {
             const Vec<3>& v = sys.contact_history().values()[k];
@@ -62,8 +63,8 @@ std::map<std::pair<int, int>, std::array<double, 3>> history_by_ids(const DemSys
 }
 
 /// Positions by grain id.
-std::map<int, Vec<3>> positions_by_id(const DemSystem<3>& sys) {
-    std::map<int, Vec<3>> m;
+std::map<ParticleId, Vec<3>> positions_by_id(const DemSystem<3>& sys) {
+    std::map<ParticleId, Vec<3>> m;
     for (Index i = 0; i < sys.grains().size(); ++i) m[sys.grains().id()[i]] = sys.grains().position()[i];
     return m;
 }
@@ -116,7 +117,7 @@ TEST(DemSystem, ContactHistorySurvivesReSorting) {
 }
 
 TEST(DemSystem, OneAndTwoThreadsGiveIdenticalGrains) {
-    std::vector<std::map<int, Vec<3>>> results;
+    std::vector<std::map<ParticleId, Vec<3>>> results;
     for (int threads : {1, 2}) {
         grit::parallel::set_threads(threads);
         // 2,304 grains, above parallel::serial_below, over 17 slabs of cells: the pair pass runs its
@@ -323,7 +324,7 @@ TEST(DemSystem, FrictionlessPlaneLetsStraddlingGrainsPass) {
     const auto& g = sys.grains();
     const Index flagged = g.id()[0] == 0 ? 0 : 1;
     sys.grains().fields().get<std::int32_t>(straddling_field)[flagged] = 1;
-    const int flagged_id = g.id()[flagged];
+    const ParticleId flagged_id = g.id()[flagged];
     for (int k = 0; k < 100; ++k) sys.step(1e-6);
     const Index a = g.id()[0] == flagged_id ? 0 : 1;
     EXPECT_EQ(g.velocity()[a][0], -0.5);

@@ -173,10 +173,10 @@ PointCloud sample_cloud() {
     PointCloud c;
     c.points = {0.0, 0.0, 0.0,  0.1, 0.2, 0.0,  -1.5, 2.25, 0.0,
                 1e-300, -0.0, 3.0,  1.0 / 3.0, 2.0 / 3.0, 0.0};
-    PointArray density{"density", 1, false, {1000.0, 999.5, 1000.0 / 7.0, 0.0, -1.0}, {}};
-    PointArray velocity{"velocity", 3, false, {}, {}};
+    PointArray density = PointArray::reals("density", 1, {1000.0, 999.5, 1000.0 / 7.0, 0.0, -1.0});
+    PointArray velocity = PointArray::reals("velocity", 3);
     for (int i = 0; i < 15; ++i) velocity.real.push_back(0.01 * i - 0.07);
-    PointArray phase{"phase", 1, true, {}, {0, 1, 2, 3, -7}};
+    PointArray phase = PointArray::integers("phase", 1, {0, 1, 2, 3, -7});
     c.arrays = {density, velocity, phase};
     return c;
 }
@@ -240,8 +240,7 @@ TEST_F(IoWriterTest, VtuHeaderNamesAndExactValues) {
 
 TEST_F(IoWriterTest, VtuEmptyCloud) {
     PointCloud c;
-    c.arrays = {PointArray{"density", 1, false, {}, {}}, PointArray{"velocity", 3, false, {}, {}},
-                PointArray{"phase", 1, true, {}, {}}};
+    c.arrays = {PointArray::reals("density", 1), PointArray::reals("velocity", 3), PointArray::integers("phase", 1)};
     const fs::path file = dir_ / "empty.vtu";
     grit::io::write_vtu(file, c);
 
@@ -270,7 +269,7 @@ TEST_F(IoWriterTest, VtuOverwritesExistingFile) {
 TEST_F(IoWriterTest, VtuEscapesArrayNames) {
     PointCloud c;
     c.points = {0.0, 0.0, 0.0};
-    c.arrays = {PointArray{"a<b>&\"c\"", 1, false, {2.0}, {}}};
+    c.arrays = {PointArray::reals("a<b>&\"c\"", 1, {2.0})};
     const fs::path file = dir_ / "frame.vtu";
     grit::io::write_vtu(file, c);
     EXPECT_NE(read_all(file).find("Name=\"a&lt;b&gt;&amp;&quot;c&quot;\""), std::string::npos);
