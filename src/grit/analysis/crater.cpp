@@ -20,6 +20,12 @@ std::vector<double> bin_centres(double lo, double hi, double spacing) {
 }  // namespace
 
 CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterRegion& region, double spacing) {
+    CraterProfile out = crater_bins(ps, region, spacing);
+    measure_profile(out, region.surface, spacing);
+    return out;
+}
+
+CraterProfile crater_bins(const particles::SphParticles<2>& ps, const CraterRegion& region, double spacing) {
     CraterProfile out;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     out.x = bin_centres(region.x_min, region.x_max, spacing);
@@ -43,7 +49,6 @@ CraterProfile analyse_crater(const particles::SphParticles<2>& ps, const CraterR
             if (!region.mirror) break;
         }
     }
-    measure_profile(out, region.surface, spacing);
     return out;
 }
 
@@ -125,6 +130,12 @@ void measure_profile(CraterProfile& out, double surface0, double spacing) {
 }
 
 CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegion& region, double spacing) {
+    CraterMap out = crater_bins(ps, region, spacing);
+    measure_map(out, region.surface, spacing);
+    return out;
+}
+
+CraterMap crater_bins(const particles::SphParticles<3>& ps, const CraterRegion& region, double spacing) {
     CraterMap out;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     out.x = bin_centres(region.x_min, region.x_max, spacing);
@@ -147,7 +158,6 @@ CraterMap analyse_crater(const particles::SphParticles<3>& ps, const CraterRegio
             }
         }
     }
-    measure_map(out, region.surface, spacing);
     return out;
 }
 

@@ -45,6 +45,11 @@ struct CraterProfile {
 /// Symmetry planes' images are left out (with `mirror`, each particle counts twice).
 CraterProfile analyse_crater(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
 
+/// The local pass of analyse_crater: the bins (x, surface) from the solid particles of `particles` only,
+/// not measured. The bins of sub-domains combine by their element-wise maximum (NaN: no solid there), and
+/// measure_profile of the combined bins is the whole set's crater.
+CraterProfile crater_bins(const particles::SphParticles<2>& particles, const CraterRegion& region, double spacing);
+
 /// C_d, C_w, rim width, lip height, area and shape factor of a profile whose bins (x, surface) are filled, by the rules above;
 /// `surface` is the original surface's height y0.
 void measure_profile(CraterProfile& profile, double surface, double spacing);
@@ -69,6 +74,8 @@ struct CraterMap {
 };
 
 CraterMap analyse_crater(const particles::SphParticles<3>& particles, const CraterRegion& region, double spacing);
+/// The local pass of the 3D analysis: the cells (x, y, surface), not measured; they combine as the 2D bins.
+CraterMap crater_bins(const particles::SphParticles<3>& particles, const CraterRegion& region, double spacing);
 
 /// C_d, the section's measures and the length of a map whose cells (x, y, surface) are filled, by the
 /// rules above; `surface` is the original surface's height z0.

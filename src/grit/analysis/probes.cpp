@@ -23,8 +23,8 @@ struct WeightedSum {
 }  // namespace
 
 template <int Dim>
-double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& ps,
-                      const sph::Kernel<Dim>& kernel, double spacing, const neighbors::PeriodicBox<Dim>& box) {
+ProbeSample sample_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& ps, const sph::Kernel<Dim>& kernel,
+                         const neighbors::PeriodicBox<Dim>& box) {
     using Vec = core::Vec<Dim>;
     const Vec* x = ps.position();
     const auto* phase = ps.phase();
@@ -40,7 +40,7 @@ double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>
                         return lowest;
             return x[i][probe.axis];
         });
-        return m == lowest ? std::numeric_limits<double>::quiet_NaN() : m + 0.5 * spacing;
+        return {m == lowest ? std::numeric_limits<double>::quiet_NaN() : m, 0.0};
     }
 
     Vec at{};
@@ -66,12 +66,27 @@ double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>
             });
         },
         kernel);
-    return s.weight > 0.0 ? s.value / s.weight : 0.0;
+    return {s.value, s.weight};
+}
+
+double probe_value(const ProbeSpec& probe, const ProbeSample& sample, double spacing) {
+    if (probe.kind == "front") return std::isnan(sample.value) ? sample.value : sample.value + 0.5 * spacing;
+    return sample.weight > 0.0 ? sample.value / sample.weight : 0.0;
+}
+
+template <int Dim>
+double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& ps, const sph::Kernel<Dim>& kernel,
+                      double spacing, const neighbors::PeriodicBox<Dim>& box) {
+    return probe_value(probe, sample_probe(probe, ps, kernel, box), spacing);
 }
 
 template double evaluate_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&, double,
                                   const neighbors::PeriodicBox<2>&);
 template double evaluate_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&, double,
                                   const neighbors::PeriodicBox<3>&);
+template ProbeSample sample_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&,
+                                     const neighbors::PeriodicBox<2>&);
+template ProbeSample sample_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&,
+                                     const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

@@ -33,9 +33,26 @@ template <int Dim>
 double evaluate_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& particles,
                       const sph::Kernel<Dim>& kernel, double spacing, const neighbors::PeriodicBox<Dim>& box = {});
 
+/// A probe's local pass over the particles one sub-domain holds: a point probe's two sums (`value`:
+/// sum q W m/rho, `weight`: sum W m/rho), which sub-domains combine by adding; a front's furthest centre
+/// (`value`, NaN when it has none; `weight` unused), which they combine by their maximum.
+struct ProbeSample {
+    double value = 0.0;
+    double weight = 0.0;
+};
+template <int Dim>
+ProbeSample sample_probe(const ProbeSpec& probe, const particles::SphParticles<Dim>& particles,
+                         const sph::Kernel<Dim>& kernel, const neighbors::PeriodicBox<Dim>& box = {});
+/// The probe's value from its combined sample (evaluate_probe is sample_probe, then this).
+double probe_value(const ProbeSpec& probe, const ProbeSample& sample, double spacing);
+
 extern template double evaluate_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&,
                                          const sph::Kernel<2>&, double, const neighbors::PeriodicBox<2>&);
 extern template double evaluate_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&,
                                          const sph::Kernel<3>&, double, const neighbors::PeriodicBox<3>&);
+extern template ProbeSample sample_probe<2>(const ProbeSpec&, const particles::SphParticles<2>&, const sph::Kernel<2>&,
+                                            const neighbors::PeriodicBox<2>&);
+extern template ProbeSample sample_probe<3>(const ProbeSpec&, const particles::SphParticles<3>&, const sph::Kernel<3>&,
+                                            const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

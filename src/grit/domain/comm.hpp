@@ -5,17 +5,19 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace grit::domain {
 
 /// How an output value of one sub-domain combines with the others' into the run's value.
 enum class Combine {
-    same,       ///< every sub-domain holds the same value (time, step, dt, a set-up constant)
+    same,       ///< every sub-domain holds the same value (time, step, dt, a set-up constant, or a value its
+                ///< module combined itself: a crater from its combined bins, a mean from its combined sums)
     sum,        ///< a sum over particles or events (mass, energy, counts)
     min,        ///< a minimum over particles (the smallest porosity)
     max,        ///< a maximum over particles (the fastest speed, the largest plastic strain)
-    whole_set,  ///< needs the whole set, not a combination of local values (a mean of ratios, the crater's
-                ///< shape from its bins, connected components): gathered before it is computed
+    whole_set,  ///< needs the whole set, not a combination of local values (connected components, the run's
+                ///< first impact): gathered before it is computed
 };
 
 /// The name of a combine kind, as documentation and messages write it.
@@ -44,6 +46,11 @@ public:
     /// True on every rank when `value` is true on any (for the shared neighbour-list rebuild decision, which
     /// does not go through it yet: each list is still rebuilt by its owner).
     virtual bool any(bool value) const = 0;
+    /// Element-wise reductions, in place, of arrays every rank holds with the same length: the local pass
+    /// of an analysis (a crater's bins, the probes' partial sums) becomes the run's. max_each leaves NaN
+    /// out as max does (a bin no rank has a particle in stays NaN).
+    virtual void max_each(std::vector<double>& values) const = 0;
+    virtual void sum_each(std::vector<double>& values) const = 0;
 
     /// `value` of this rank combined with the others' by `kind`. `same` returns it as it is (every rank
     /// holds it); `whole_set` values are computed over the gathered set by their module, not here.
@@ -68,6 +75,8 @@ public:
     double max(double value) const override { return value; }
     double sum(double value) const override { return value; }
     bool any(bool value) const override { return value; }
+    void max_each(std::vector<double>&) const override {}
+    void sum_each(std::vector<double>&) const override {}
 };
 
 }  // namespace grit::domain

@@ -23,24 +23,30 @@ analysis::CraterRegion crater_region(const io::CaseSpec& spec) {
             spec.crater_y_max};
 }
 
-/// The crater of a 2D run (its profile) or of a 3D run (its map).
+/// The crater of a 2D run (its profile) or of a 3D run (its map): each sub-domain's bins, combined by
+/// their maximum over every sub-domain, then measured (the same on every rank).
 template <int Dim>
-auto crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing) {
-    return analysis::analyse_crater(state.particles, crater_region(spec), spacing);
+auto crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing, const domain::Comm& comm) {
+    auto c = analysis::crater_bins(state.particles, crater_region(spec), spacing);
+    comm.max_each(c.surface);
+    if constexpr (Dim == 2) analysis::measure_profile(c, spec.crater_surface, spacing);
+    else analysis::measure_map(c, spec.crater_surface, spacing);
+    return c;
 }
 
 }  // namespace
 
 template <int Dim>
 void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    const auto c = crater_of(state_, setup_.spec, setup_.spacing);
-    out.push_back(sim::OutputValue::real("crater_depth", c.depth, domain::Combine::whole_set));
-    out.push_back(sim::OutputValue::real("crater_width", c.width, domain::Combine::whole_set));
-    out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width, domain::Combine::whole_set));
-    out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height, domain::Combine::whole_set));
-    out.push_back(sim::OutputValue::real("crater_area", c.area, domain::Combine::whole_set));
-    out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor, domain::Combine::whole_set));
-    if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length, domain::Combine::whole_set));
+    // Measured from the combined bins: every sub-domain holds the same values.
+    const auto c = crater_of(state_, setup_.spec, setup_.spacing, setup_.comm);
+    out.push_back(sim::OutputValue::real("crater_depth", c.depth, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("crater_width", c.width, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("crater_lip_height", c.lip_height, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("crater_area", c.area, domain::Combine::same));
+    out.push_back(sim::OutputValue::real("crater_shape_factor", c.shape_factor, domain::Combine::same));
+    if constexpr (Dim == 3) out.push_back(sim::OutputValue::real("crater_length", c.length, domain::Combine::same));
 }
 
 template <int Dim>
@@ -69,7 +75,7 @@ std::string CraterModule<Dim>::header() {
 
 template <int Dim>
 void CraterModule<Dim>::write_output(const sim::OutputPlace& place) {
-    const auto c = crater_of(state_, setup_.spec, setup_.spacing);
+    const auto c = crater_of(state_, setup_.spec, setup_.spacing, setup_.comm);
     // Header first (numpy's genfromtxt(names=True), pandas' read_csv); the time is a column.
     std::string rows;
     const std::string time = fmt::format("{:.9g}", state_.clock.time);
@@ -125,8 +131,38 @@ ProbesModule<Dim>::ProbesModule(const sim::State<Dim>& state, const sim::RunSetu
     : state_(state), setup_(setup), probes_(setup.spec.template module_spec<ProbesSpec>(ProbesSpec::key)->probes) {}
 
 template <int Dim>
+std::vector<double> ProbesModule<Dim>::values() const {
+    std::vector<double> sums, fronts;  // [value, weight] of each point probe; the furthest centre of each front
+    std::vector<analysis::ProbeSample> samples;
+    for (const auto& p : probes_) {
+        samples.push_back(analysis::sample_probe(p, state_.particles, setup_.kernel, setup_.periodic_box));
+        if (p.kind == "front") {
+            fronts.push_back(samples.back().value);
+        } else {
+            sums.push_back(samples.back().value);
+            sums.push_back(samples.back().weight);
+        }
+    }
+    setup_.comm.sum_each(sums);
+    setup_.comm.max_each(fronts);
+    std::vector<double> out;
+    std::size_t s = 0, f = 0;
+    for (std::size_t k = 0; k < probes_.size(); ++k) {
+        auto& sample = samples[k];
+        if (probes_[k].kind == "front") {
+            sample.value = fronts[f++];
+        } else {
+            sample.value = sums[s++];
+            sample.weight = sums[s++];
+        }
+        out.push_back(analysis::probe_value(probes_[k], sample, setup_.spacing));
+    }
+    return out;
+}
+
+template <int Dim>
 double ProbesModule<Dim>::value(std::size_t k) const {
-    return analysis::evaluate_probe(probes_.at(k), state_.particles, setup_.kernel, setup_.spacing, setup_.periodic_box);
+    return values().at(k);
 }
 
 template <int Dim>
@@ -138,6 +174,7 @@ double ProbesModule<Dim>::value(const std::string& name) const {
 
 template <int Dim>
 void ProbesModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
+    const auto v = values();
     for (std::size_t k = 0; k < probes_.size(); ++k) {
         const auto& p = probes_[k];
         const char* unit = p.kind == "front"           ? "m"
@@ -145,7 +182,8 @@ void ProbesModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
                            : p.quantity == "density"  ? "kg/m^3"
                            : p.quantity == "velocity" ? "m/s"
                                                       : "-";
-        out.push_back(sim::OutputValue::real(p.name, value(k), domain::Combine::whole_set).in_group("probes").in_unit(unit));
+        // Combined in values(): every sub-domain holds the same value.
+        out.push_back(sim::OutputValue::real(p.name, v[k], domain::Combine::same).in_group("probes").in_unit(unit));
     }
 }
 

@@ -78,6 +78,9 @@ public:
     std::string name() const override { return "probes"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
+    /// Every probe's value now (case order): each sub-domain's samples, point probes' sums added and
+    /// fronts' maxima taken over every sub-domain, then the values (the same on every rank).
+    std::vector<double> values() const;
     /// The value of probe k (case order) now.
     double value(std::size_t k) const;
     /// The value of the probe named `name` now; throws std::out_of_range if there is none.

@@ -157,29 +157,32 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
     // sedimentation case.
     const auto& grains = state_.grains->grains();
     const auto& gs = coupling_.grain_state();
-    double eps_sum = 0.0, eps_count = 0.0;
+    // Means are ratios of sums: each sub-domain's sums, added over all of them, then divided (the same on
+    // every rank).
+    std::vector<double> sums(5, 0.0);  // porosity, grains with fluid around, and the mass-weighted sums below
+    double &eps_sum = sums[0], &eps_count = sums[1], &speed = sums[2], &settling = sums[3], &grain_mass = sums[4];
     for (std::size_t i = 0; i < gs.porosity.size(); ++i)
         if (gs.shepard[i] > 0.0) {
             eps_sum += gs.porosity[i];
             eps_count += 1.0;
         }
-    out.push_back(OutputValue::real("grain_porosity", eps_count > 0.0 ? eps_sum / eps_count
-                                                                      : std::numeric_limits<double>::quiet_NaN(), domain::Combine::whole_set));
     const double g = core::norm(gravity_);
     const core::Vec<Dim> down = g > 0.0 ? gravity_ * (1.0 / g) : core::Vec<Dim>::zero();
-    double speed = 0.0, settling = 0.0, grain_mass = 0.0;  // mass-weighted sums
     for (Index i = 0; i < grains.size(); ++i) {
         const double m = grains.mass()[i];
         speed += m * core::norm(grains.velocity()[i]);
         settling += m * core::dot(grains.velocity()[i], down);
         grain_mass += m;
     }
-    out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0, domain::Combine::whole_set).series_only());
+    setup_.comm.sum_each(sums);
+    out.push_back(OutputValue::real("grain_porosity", eps_count > 0.0 ? eps_sum / eps_count
+                                                                      : std::numeric_limits<double>::quiet_NaN(), domain::Combine::same));
+    out.push_back(OutputValue::real("grain_speed", grain_mass > 0.0 ? speed / grain_mass : 0.0, domain::Combine::same).series_only());
     // A column whether or not grains are there yet (a feed that starts later, grains that all left).
     const double settling_velocity = grain_mass > 0.0 ? settling / grain_mass : std::numeric_limits<double>::quiet_NaN();
-    if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity, domain::Combine::whole_set).series_only());
+    if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity, domain::Combine::same).series_only());
     if (g > 0.0 && grain_mass > 0.0)
-        out.push_back(OutputValue::real("terminal_velocity", settling_velocity, domain::Combine::whole_set).summary_only());
+        out.push_back(OutputValue::real("terminal_velocity", settling_velocity, domain::Combine::same).summary_only());
     out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed(), domain::Combine::whole_set).summary_only());
     out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count()), domain::Combine::sum).series_only());
     bed_values(out);
@@ -207,7 +210,8 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
         lo[k] = box.periodic[k] ? box.lower[k] : 1e300;
         hi[k] = box.periodic[k] ? box.upper[k] : -1e300;
     }
-    double solid = 0.0, force = 0.0;
+    std::vector<double> sums(4, 0.0);  // the fixed grains' volume and force along e; the fluid's flux and volume
+    double &solid = sums[0], &force = sums[1], &flux = sums[2], &volume = sums[3];
     const auto* fluid_force = grains.fields().template get<core::Vec<Dim>>("fluid_force").data();
     for (Index i = 0; i < grains.size(); ++i) {
         if (!fixed[i]) continue;
@@ -220,6 +224,17 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
         solid += coupling::grain_volume<Dim>(r);
         force += core::dot(fluid_force[i], e);
     }
+    // The bed's box over every sub-domain's fixed grains: the largest -lo and hi.
+    std::vector<double> extent(2 * Dim);
+    for (int k = 0; k < Dim; ++k) {
+        extent[static_cast<std::size_t>(k)] = -lo[k];
+        extent[static_cast<std::size_t>(Dim + k)] = hi[k];
+    }
+    setup_.comm.max_each(extent);
+    for (int k = 0; k < Dim; ++k) {
+        lo[k] = -extent[static_cast<std::size_t>(k)];
+        hi[k] = extent[static_cast<std::size_t>(Dim + k)];
+    }
     double bed_volume = 1.0;
     for (int k = 0; k < Dim; ++k) bed_volume *= hi[k] - lo[k];
     if (!(bed_volume > 0.0)) return;
@@ -227,7 +242,6 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
     const double* porosity = ps.fields().template get<double>(porosity_field).data();
     const std::int32_t* phase = ps.phase();
     const auto fluid = static_cast<std::int32_t>(Phase::fluid);
-    double flux = 0.0, volume = 0.0;
     for (Index a = 0; a < ps.size(); ++a) {
         if (phase[a] != fluid) continue;
         bool inside = true;
@@ -237,10 +251,11 @@ void CouplingModule<Dim>::bed_values(std::vector<sim::OutputValue>& out) const {
         flux += v * porosity[a] * core::dot(ps.velocity()[a], e);
         volume += v;
     }
+    setup_.comm.sum_each(sums);
     const double eps = 1.0 - solid / bed_volume;
-    out.push_back(OutputValue::real("superficial_velocity", volume > 0.0 ? flux / volume : 0.0, domain::Combine::whole_set));
-    out.push_back(OutputValue::real("pressure_gradient", force / (eps * bed_volume), domain::Combine::whole_set));
-    out.push_back(OutputValue::real("bed_porosity", eps, domain::Combine::whole_set));
+    out.push_back(OutputValue::real("superficial_velocity", volume > 0.0 ? flux / volume : 0.0, domain::Combine::same));
+    out.push_back(OutputValue::real("pressure_gradient", force / (eps * bed_volume), domain::Combine::same));
+    out.push_back(OutputValue::real("bed_porosity", eps, domain::Combine::same));
 }
 
 template class CouplingModule<2>;

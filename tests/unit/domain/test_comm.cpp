@@ -31,6 +31,13 @@ public:
         return v;
     }
     bool any(bool v) const override { return v || std::any_of(others_.begin(), others_.end(), [](double o) { return o != 0.0; }); }
+    /// Each other rank holds its value in every element.
+    void max_each(std::vector<double>& values) const override {
+        for (double& v : values) v = max(v);
+    }
+    void sum_each(std::vector<double>& values) const override {
+        for (double& v : values) v = sum(v);
+    }
 
 private:
     std::vector<double> others_;
@@ -47,6 +54,28 @@ TEST(Comm, SerialIsRankZeroOfOneAndReturnsItsArgument) {
     EXPECT_FALSE(comm.any(false));
     for (const auto kind : {Combine::same, Combine::sum, Combine::min, Combine::max, Combine::whole_set})
         EXPECT_EQ(comm.combine(kind, 0.3), 0.3) << combine_name(kind);
+    std::vector<double> bins = {1.0, std::nan(""), -2.0};
+    comm.max_each(bins);
+    comm.sum_each(bins);
+    EXPECT_EQ(bins[0], 1.0);
+    EXPECT_TRUE(std::isnan(bins[1]));
+    EXPECT_EQ(bins[2], -2.0);
+}
+
+// Element-wise: a bin no rank has a value in stays NaN; one some rank has takes the largest.
+TEST(Comm, ElementWiseMaximumLeavesNaNOutAndSumAdds) {
+    const FixedPeers one_nan({std::nan("")});
+    std::vector<double> bins = {std::nan(""), 3.0};
+    one_nan.max_each(bins);
+    EXPECT_TRUE(std::isnan(bins[0]));
+    EXPECT_EQ(bins[1], 3.0);
+    const FixedPeers two({4.0, -1.0});
+    bins = {std::nan(""), 5.0, 1.0};
+    two.max_each(bins);
+    EXPECT_EQ(bins, (std::vector<double>{4.0, 5.0, 4.0}));
+    std::vector<double> sums = {0.5, 2.0};
+    two.sum_each(sums);
+    EXPECT_EQ(sums, (std::vector<double>{3.5, 5.0}));
 }
 
 TEST(Comm, EachCombineKindReducesAsItsNameSays) {
