@@ -400,19 +400,6 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
         }
     }
 
-    // Crack analysis: asked for with [cracks], and on by default for brittle (JH-2) solids.
-    c.crack_link_distance = 1.5 * dx;
-    for (const auto& m : c.materials)
-        if (std::holds_alternative<material::JH2>(m.solid_model)) c.has_cracks = true;
-    if (top.has("cracks")) {
-        const Section cracks = top.section("cracks");
-        if (c.solids.empty()) throw InputError("key 'cracks': the crack analysis needs a [[solid]]");
-        c.has_cracks = true;
-        c.crack_damage_threshold = cracks.number_or("damage_threshold", c.crack_damage_threshold, in_range(1e-9, 1.0));
-        c.crack_link_distance = cracks.number_or("link_distance", c.crack_link_distance, positive("[m]"));
-        c.crack_min_particles = cracks.integer_or("min_particles", 3, 1, 1000000000);
-    }
-
     const Section grain_materials = top.section("grain_materials");
     GrainMaterialTable grain_table(grain_materials, c.grain_materials);
     for (const Section& g : top.sections("grains")) {

@@ -290,11 +290,6 @@ struct CaseSpec {
     /// laid and run (modules/symmetry_plane).
     bool symmetry_plane = false;
     std::string symmetry_key = "domain.symmetry";  ///< the key that set it (for messages)
-    /// Crack analysis (damaged_area, crack_count): on for [cracks] or any JH-2 solid.
-    bool has_cracks = false;
-    double crack_damage_threshold = 0.5;  ///< cracks.damage_threshold: D at or above it is damaged [-]
-    double crack_link_distance = 0.0;     ///< cracks.link_distance [m]; default 1.5 particle spacings
-    Index crack_min_particles = 3;        ///< cracks.min_particles: smaller clusters are not cracks
     std::vector<dem::GrainMaterial> grain_materials;  ///< the grain (and grain-wall) materials used
     std::vector<GrainBlockSpec> grains;
     std::vector<GrainWallSpec> grain_walls;

@@ -13,6 +13,7 @@
 #include "grit/analysis/probes.hpp"
 #include "grit/io/csv_file.hpp"
 #include "grit/io/hdf5_file.hpp"
+#include "grit/modules/cracks_table.hpp"
 
 namespace grit::modules {
 
@@ -111,10 +112,9 @@ void CraterModule<Dim>::load(const io::Hdf5Group& group) {
 
 template <int Dim>
 void CracksModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    const auto& spec = setup_.spec;
-    const auto m = analysis::analyse_cracks(
-        state_.particles, state_.particles.fields().template get<double>("damage").data(),
-        {spec.crack_damage_threshold, spec.crack_link_distance, spec.crack_min_particles});
+    const auto m = analysis::analyse_cracks(state_.particles,
+                                            state_.particles.fields().template get<double>("damage").data(),
+                                            *crack_options(setup_.spec));
     out.push_back(sim::OutputValue::real("damaged_area", m.damaged_area, domain::Combine::sum));
     out.push_back(sim::OutputValue::count("crack_count", static_cast<double>(m.crack_count), domain::Combine::whole_set));
 }

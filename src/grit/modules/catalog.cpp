@@ -8,6 +8,7 @@
 #include "grit/modules/abrasive_feed.hpp"
 #include "grit/modules/analyses.hpp"
 #include "grit/modules/coupling.hpp"
+#include "grit/modules/cracks_table.hpp"
 #include "grit/modules/grain_contact.hpp"
 #include "grit/modules/grain_feed.hpp"
 #include "grit/modules/grains.hpp"
@@ -69,9 +70,7 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     table.push_back(plain<Dim, CraterModule>("crater", before, [](const Spec& s) {
         return !s.solids.empty() && s.has_crater;
     }));
-    table.push_back(plain<Dim, CracksModule>("cracks", before, [](const Spec& s) {
-        return !s.solids.empty() && s.has_cracks;
-    }));
+    table.push_back(plain<Dim, CracksModule>("cracks", before, [](const Spec& s) { return crack_options(s).has_value(); }));
     table.push_back(plain<Dim, FluidInSolidModule>("fluid_in_solid", before, [](const Spec& s) {
         return !s.solids.empty() && has_fluid(s);
     }));
@@ -116,7 +115,7 @@ namespace grit::io {
 // The tables grit's modules read themselves; the others are still read by io/case_reader.cpp into
 // CaseSpec's own members.
 std::vector<CaseTable> builtin_case_tables() {
-    return {modules::probes_table()};
+    return {modules::probes_table(), modules::cracks_table()};
 }
 
 }  // namespace grit::io

@@ -19,6 +19,7 @@
 
 #include "grit/core/error.hpp"
 #include "grit/core/types.hpp"
+#include "grit/modules/cracks_table.hpp"
 #include "grit/modules/probes_table.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/case_spec.hpp"
@@ -618,9 +619,11 @@ TEST_F(CaseReaderTest, DamageLengthOfAJohnsonCookSolid) {
 TEST_F(CaseReaderTest, BrittleSolidKeysAndErrors) {
     const fs::path file = fs::path(GRIT_SOURCE_DIR) / "cases" / "compression_sandstone_2d" / "case.toml";
     const CaseSpec c = read_case(file, {"materials.red_sandstone.failure_d1=0.04"});
-    EXPECT_TRUE(c.has_cracks);
-    EXPECT_DOUBLE_EQ(c.crack_link_distance, 1.5 * c.particle_spacing);
-    EXPECT_EQ(c.crack_min_particles, 3);
+    const auto cracks = grit::modules::crack_options(c);  // on by default for a JH-2 solid
+    ASSERT_TRUE(cracks.has_value());
+    EXPECT_DOUBLE_EQ(cracks->damage_threshold, 0.5);
+    EXPECT_DOUBLE_EQ(cracks->link_distance, 1.5 * c.particle_spacing);
+    EXPECT_EQ(cracks->min_particles, 3);
     bool found = false;
     for (const auto& m : c.materials)
         if (m.name == "red_sandstone") {
