@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,29 +40,28 @@ double cell_size_for(const core::Vec<Dim>* x, Index n, double link) {
 }  // namespace
 
 template <int Dim>
-CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const double* damage, const CrackOptions& options) {
+std::vector<domain::ParticleId> crack_labels(const particles::SphParticles<Dim>& ps, const double* damage,
+                                             const CrackOptions& options, Index owned,
+                                             const domain::ParticleId* ghost_labels) {
     if (!(options.link_distance > 0.0))
         throw core::InputError("crack analysis: link_distance = " + std::to_string(options.link_distance) +
                                " must be > 0");
-    CrackMeasures out;
     const auto* x = ps.position();
     const auto* phase = ps.phase();
-    const auto* m = ps.mass();
-    const auto* rho = ps.density();
+    const auto* id = ps.id();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
+    std::vector<domain::ParticleId> labels(static_cast<std::size_t>(ps.size()), -1);
 
-    // Damaged solid particles in index order; the area is summed serially in that order (deterministic).
+    // Damaged solid particles, owned then ghosts, in index order.
     std::vector<Index> damaged;
     std::vector<core::Vec<Dim>> xd;
     for (Index i = 0; i < ps.size(); ++i) {
         if (phase[i] != solid || !(damage[i] >= options.damage_threshold) || ps.is_image(i)) continue;
         damaged.push_back(i);
         xd.push_back(x[i]);
-        out.damaged_area += m[i] / rho[i];
     }
     const auto n = static_cast<Index>(damaged.size());
-    out.damaged_particles = n;
-    if (n == 0) return out;
+    if (n == 0) return labels;
 
     // Links: each damaged particle against the 3^Dim cells around it (cells are >= link_distance).
     const double link2 = options.link_distance * options.link_distance;
@@ -78,8 +78,8 @@ CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const doubl
         }
         auto cell = lo;
         while (true) {
-            const auto id = static_cast<std::size_t>(grid.linear(cell));
-            for (Index s = cell_start[id]; s < cell_start[id + 1]; ++s) {
+            const auto at = static_cast<std::size_t>(grid.linear(cell));
+            for (Index s = cell_start[at]; s < cell_start[at + 1]; ++s) {
                 const Index b = order[static_cast<std::size_t>(s)];
                 if (b > a && core::norm2(xd[static_cast<std::size_t>(a)] - xd[static_cast<std::size_t>(b)]) <= link2)
                     sets.unite(a, b);
@@ -92,15 +92,58 @@ CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const doubl
         }
     }
 
-    std::vector<Index> members(static_cast<std::size_t>(n), 0);
-    for (Index a = 0; a < n; ++a) ++members[static_cast<std::size_t>(sets.find(a))];
-    for (const Index count : members) {
-        if (count >= options.min_particles && count > 0) ++out.crack_count;
+    // A cluster's label: the smallest of its members' ids and of the labels its ghosts brought.
+    std::vector<domain::ParticleId> smallest(static_cast<std::size_t>(n), std::numeric_limits<domain::ParticleId>::max());
+    for (Index a = 0; a < n; ++a) {
+        const Index i = damaged[static_cast<std::size_t>(a)];
+        domain::ParticleId label = id[i];
+        if (ghost_labels && i >= owned) label = std::min(label, ghost_labels[i - owned]);
+        auto& root = smallest[static_cast<std::size_t>(sets.find(a))];
+        root = std::min(root, label);
+    }
+    for (Index a = 0; a < n; ++a)
+        labels[static_cast<std::size_t>(damaged[static_cast<std::size_t>(a)])] = smallest[static_cast<std::size_t>(sets.find(a))];
+    return labels;
+}
+
+std::map<domain::ParticleId, Index> crack_sizes(const std::vector<domain::ParticleId>& labels, Index owned) {
+    std::map<domain::ParticleId, Index> sizes;
+    for (Index i = 0; i < owned; ++i)
+        if (labels[static_cast<std::size_t>(i)] >= 0) ++sizes[labels[static_cast<std::size_t>(i)]];
+    return sizes;
+}
+
+void count_cracks(const std::map<domain::ParticleId, Index>& sizes, const CrackOptions& options, CrackMeasures& out) {
+    out.crack_count = 0;
+    out.largest_crack = 0;
+    for (const auto& [label, count] : sizes) {
+        if (count >= options.min_particles) ++out.crack_count;
         out.largest_crack = std::max(out.largest_crack, count);
     }
+}
+
+template <int Dim>
+CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const double* damage, const CrackOptions& options) {
+    CrackMeasures out;
+    const auto* phase = ps.phase();
+    const auto* m = ps.mass();
+    const auto* rho = ps.density();
+    const auto solid = static_cast<std::int32_t>(Phase::solid);
+    const auto labels = crack_labels(ps, damage, options, ps.size());
+    // The area is summed serially in index order (deterministic).
+    for (Index i = 0; i < ps.size(); ++i) {
+        if (phase[i] != solid || !(damage[i] >= options.damage_threshold) || ps.is_image(i)) continue;
+        out.damaged_area += m[i] / rho[i];
+        ++out.damaged_particles;
+    }
+    count_cracks(crack_sizes(labels, ps.size()), options, out);
     return out;
 }
 
+template std::vector<domain::ParticleId> crack_labels<2>(const particles::SphParticles<2>&, const double*,
+                                                         const CrackOptions&, Index, const domain::ParticleId*);
+template std::vector<domain::ParticleId> crack_labels<3>(const particles::SphParticles<3>&, const double*,
+                                                         const CrackOptions&, Index, const domain::ParticleId*);
 template CrackMeasures analyse_cracks<2>(const particles::SphParticles<2>&, const double*, const CrackOptions&);
 template CrackMeasures analyse_cracks<3>(const particles::SphParticles<3>&, const double*, const CrackOptions&);
 

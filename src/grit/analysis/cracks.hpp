@@ -2,7 +2,11 @@
 // cracks, so that the first seed paper's radial and lateral cracks are counted rather than eyeballed.
 #pragma once
 
+#include <map>
+#include <vector>
+
 #include "grit/core/types.hpp"
+#include "grit/domain/particle_id.hpp"
 #include "grit/particles/sph_particles.hpp"
 
 namespace grit::analysis {
@@ -28,6 +32,30 @@ template <int Dim>
 CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& particles, const double* damage,
                              const CrackOptions& options);
 
+/// Each particle's crack label: the smallest id in its cluster of damaged particles (-1: not damaged). An
+/// id does not depend on where a particle is stored or how the set is split, so the labels are the same
+/// whoever computes them. Over a sub-domain, particles [0, owned) are its own and [owned, size) ghosts of
+/// other sub-domains' particles within link_distance of its own; a cluster that crosses the boundary is
+/// joined through them: pass `ghost_labels` (size - owned values: each ghost's label as its owner
+/// computed it at the last exchange; null the first time), exchange the labels of the ghosts again and
+/// repeat until none changes, and every sub-domain holds the whole set's labels. Symmetry-plane images
+/// are left out (-1). Throws core::InputError if link_distance <= 0.
+template <int Dim>
+std::vector<domain::ParticleId> crack_labels(const particles::SphParticles<Dim>& particles, const double* damage,
+                                             const CrackOptions& options, Index owned,
+                                             const domain::ParticleId* ghost_labels = nullptr);
+
+/// How many of the particles [0, owned) carry each crack label (one sub-domain's share; sub-domains add
+/// their shares label by label).
+std::map<domain::ParticleId, Index> crack_sizes(const std::vector<domain::ParticleId>& labels, Index owned);
+
+/// crack_count and largest_crack of the members per label over every sub-domain.
+void count_cracks(const std::map<domain::ParticleId, Index>& sizes, const CrackOptions& options, CrackMeasures& out);
+
+extern template std::vector<domain::ParticleId> crack_labels<2>(const particles::SphParticles<2>&, const double*,
+                                                                const CrackOptions&, Index, const domain::ParticleId*);
+extern template std::vector<domain::ParticleId> crack_labels<3>(const particles::SphParticles<3>&, const double*,
+                                                                const CrackOptions&, Index, const domain::ParticleId*);
 extern template CrackMeasures analyse_cracks<2>(const particles::SphParticles<2>&, const double*, const CrackOptions&);
 extern template CrackMeasures analyse_cracks<3>(const particles::SphParticles<3>&, const double*, const CrackOptions&);
 

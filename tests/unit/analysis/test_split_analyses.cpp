@@ -1,12 +1,16 @@
 // Analyses as a local pass and a combine: the crater's bins and the probes' samples of a set split into two
 // sub-domains, combined as domain::Comm combines them (bins and fronts by their maximum, NaN left out;
-// point probes' sums by adding), give the whole set's crater and probe values.
+// point probes' sums by adding), give the whole set's crater and probe values; the crack labels, joined
+// through ghosts whose labels are exchanged until none changes, give the whole set's cracks.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <random>
 #include <vector>
 
+#include "grit/analysis/cracks.hpp"
 #include "grit/analysis/crater.hpp"
 #include "grit/analysis/probes.hpp"
 
@@ -155,6 +159,90 @@ TEST(SplitAnalyses, ProbeSamplesOfTwoSubDomainsGiveTheWholeSetsValues) {
     const auto none = analysis::sample_probe(probes[3], right, kernel);
     EXPECT_TRUE(std::isnan(none.value));
     EXPECT_EQ(max_each({none.value}, {front_a.value})[0], front_a.value);
+}
+
+/// One sub-domain of a crack test: its own particles, then ghosts (copies of the other's within the link
+/// distance of the cut) with the index of each ghost's owner there.
+struct SubDomain {
+    grit::particles::SphParticles<2> ps;
+    std::vector<double> damage;
+    Index owned = 0;
+    std::vector<Index> owner;  // per ghost: its index in the other sub-domain
+};
+
+TEST(SplitAnalyses, CrackLabelsExchangedThroughGhostsGiveTheWholeSetsCracks) {
+    // A 40 x 30 solid lattice with random damage (20 %) and a snake of damage that crosses the cut at
+    // x = 20 dx four times: its label must travel through several exchanges.
+    constexpr double h = 1e-3;
+    grit::particles::SphParticles<2> whole;
+    std::vector<double> damage;
+    std::mt19937 rng(7);
+    for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 40; ++i) {
+            const Index a = whole.append(1);
+            whole.position()[a] = {{i * h, j * h}};
+            whole.phase()[a] = static_cast<std::int32_t>(Phase::solid);
+            whole.density()[a] = 2500.0;
+            whole.mass()[a] = 2500.0 * h * h;
+            const bool snake = (j == 25 && i >= 12 && i <= 28) || ((i == 12 || i == 28) && j >= 20 && j <= 25) ||
+                               (j == 20 && i >= 12 && i <= 28 && (i < 16 || i > 24));
+            damage.push_back(snake || std::uniform_real_distribution<double>(0.0, 1.0)(rng) < 0.2 ? 0.9 : 0.1);
+        }
+    grit::analysis::CrackOptions options;
+    options.link_distance = 1.5 * h;
+    const auto reference = grit::analysis::analyse_cracks<2>(whole, damage.data(), options);
+    const auto reference_labels = grit::analysis::crack_labels<2>(whole, damage.data(), options, whole.size());
+    ASSERT_GT(reference.crack_count, 3);
+
+    const double cut = 19.5 * h;
+    std::array<SubDomain, 2> sub;
+    std::array<std::vector<Index>, 2> from;  // whole-set index of each particle of each sub-domain
+    for (int side = 0; side < 2; ++side) {
+        auto mine = [&](Index i) { return (whole.position()[i][0] < cut) == (side == 0); };
+        for (Index i = 0; i < whole.size(); ++i)
+            if (mine(i)) from[side].push_back(i);
+        sub[side].owned = static_cast<Index>(from[side].size());
+        for (Index i = 0; i < whole.size(); ++i)
+            if (!mine(i) && std::abs(whole.position()[i][0] - cut) <= options.link_distance) from[side].push_back(i);
+        sub[side].ps = whole;
+        sub[side].ps.gather(from[side]);
+        for (const Index i : from[side]) sub[side].damage.push_back(damage[static_cast<std::size_t>(i)]);
+    }
+    for (int side = 0; side < 2; ++side) {
+        std::map<Index, Index> there;  // whole-set index -> index in the other sub-domain
+        for (std::size_t k = 0; k < from[1 - side].size(); ++k) there[from[1 - side][k]] = static_cast<Index>(k);
+        for (std::size_t k = static_cast<std::size_t>(sub[side].owned); k < from[side].size(); ++k)
+            sub[side].owner.push_back(there.at(from[side][k]));
+    }
+
+    // Label, exchange the ghosts' labels, again until no label changes.
+    std::array<std::vector<grit::domain::ParticleId>, 2> labels, ghost_labels;
+    int rounds = 0;
+    for (bool changed = true; changed; ++rounds) {
+        ASSERT_LT(rounds, 20);
+        for (int side = 0; side < 2; ++side)
+            labels[side] = grit::analysis::crack_labels<2>(sub[side].ps, sub[side].damage.data(), options, sub[side].owned,
+                                                           rounds == 0 ? nullptr : ghost_labels[side].data());
+        changed = false;
+        for (int side = 0; side < 2; ++side) {
+            std::vector<grit::domain::ParticleId> fresh;
+            for (const Index o : sub[side].owner) fresh.push_back(labels[1 - side][static_cast<std::size_t>(o)]);
+            changed |= fresh != ghost_labels[side];
+            ghost_labels[side] = fresh;
+        }
+    }
+    EXPECT_GT(rounds, 2);  // the snake needed more than one exchange
+    // Every owned particle holds the whole set's label; the shares added label by label count the same cracks.
+    std::map<grit::domain::ParticleId, Index> sizes;
+    for (int side = 0; side < 2; ++side) {
+        for (Index k = 0; k < sub[side].owned; ++k)
+            EXPECT_EQ(labels[side][static_cast<std::size_t>(k)], reference_labels[static_cast<std::size_t>(from[side][static_cast<std::size_t>(k)])]);
+        for (const auto& [label, count] : grit::analysis::crack_sizes(labels[side], sub[side].owned)) sizes[label] += count;
+    }
+    grit::analysis::CrackMeasures combined;
+    grit::analysis::count_cracks(sizes, options, combined);
+    EXPECT_EQ(combined.crack_count, reference.crack_count);
+    EXPECT_EQ(combined.largest_crack, reference.largest_crack);
 }
 
 }  // namespace
