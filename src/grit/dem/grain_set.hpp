@@ -12,6 +12,7 @@
 #include "grit/dem/spin.hpp"
 #include "grit/domain/particle_id.hpp"
 #include "grit/particles/field_registry.hpp"
+#include "grit/particles/particle_set.hpp"
 
 namespace grit::dem {
 
@@ -51,45 +52,46 @@ constexpr double grain_inertia(double mass, double radius) noexcept {
 /// `collisions` (how many times the grain began to touch other grains; a deflected grain of Fig. 14) and
 /// `grain_contact` (1 while it touches one: set by the contact pass, kept to see the next one begin).
 template <int Dim>
-class GrainSet {
+class GrainSet : public particles::ParticleSet<Dim> {
 public:
     using Vec = core::Vec<Dim>;
     using SpinT = Spin<Dim>;
+    using particles::ParticleSet<Dim>::size;
+    using particles::ParticleSet<Dim>::id;
+    using particles::ParticleSet<Dim>::position;
 
-    GrainSet()
-        : id_(&fields_.add<domain::ParticleId>("id", -1, true)),
-          position_(&fields_.add<Vec>("position", Vec::zero(), false)),
-          velocity_(&fields_.add<Vec>("velocity", Vec::zero(), true)),
-          angular_velocity_(&fields_.add<SpinT>("angular_velocity", zero_spin<Dim>(), true)),
-          force_(&fields_.add<Vec>("force", Vec::zero(), true)),
-          torque_(&fields_.add<SpinT>("torque", zero_spin<Dim>(), false)),
-          radius_(&fields_.add<double>("radius", 0.0, true)),
-          mass_(&fields_.add<double>("mass", 0.0, true)),
-          inertia_(&fields_.add<double>("inertia", 0.0, false)),
-          material_(&fields_.add<std::int32_t>("material", 0, true)),
-          collisions_(&fields_.add<std::int32_t>("collisions", 0, true)),
-          grain_contact_(&fields_.add<std::int32_t>("grain_contact", 0, false)) {}
+    /// Registers the fields every grain has, in the order snapshots and checkpoints list them.
+    GrainSet() {
+        fields_.template add<domain::ParticleId>("id", -1, true);
+        fields_.template add<Vec>("position", Vec::zero(), false);
+        velocity_ = &fields_.template add<Vec>("velocity", Vec::zero(), true);
+        angular_velocity_ = &fields_.template add<SpinT>("angular_velocity", zero_spin<Dim>(), true);
+        force_ = &fields_.template add<Vec>("force", Vec::zero(), true);
+        torque_ = &fields_.template add<SpinT>("torque", zero_spin<Dim>(), false);
+        radius_ = &fields_.template add<double>("radius", 0.0, true);
+        mass_ = &fields_.template add<double>("mass", 0.0, true);
+        inertia_ = &fields_.template add<double>("inertia", 0.0, false);
+        material_ = &fields_.template add<std::int32_t>("material", 0, true);
+        collisions_ = &fields_.template add<std::int32_t>("collisions", 0, true);
+        grain_contact_ = &fields_.template add<std::int32_t>("grain_contact", 0, false);
+        this->bind();
+    }
 
-    GrainSet(const GrainSet& o) : fields_(o.fields_), next_hand_built_(o.next_hand_built_) { rebind(); }
+    GrainSet(const GrainSet& o) : particles::ParticleSet<Dim>(o) { rebind(); }
     GrainSet& operator=(const GrainSet& o) {
-        fields_ = o.fields_;
-        next_hand_built_ = o.next_hand_built_;
+        particles::ParticleSet<Dim>::operator=(o);
         rebind();
         return *this;
     }
 
-    particles::FieldRegistry& fields() noexcept { return fields_; }
-    const particles::FieldRegistry& fields() const noexcept { return fields_; }
-    Index size() const noexcept { return fields_.size(); }
-
     /// Appends one grain of `material` (density from it) with the id its source gave it (by origin,
     /// domain/particle_id.hpp), at rest unless v is given; returns its index.
-    Index add(domain::ParticleId id, const Vec& x, double radius, const GrainMaterial& material,
+    Index add(domain::ParticleId grain_id, const Vec& x, double radius, const GrainMaterial& material,
               std::int32_t material_index, const Vec& v = Vec::zero()) {
         const Index i = size();
         fields_.resize(i + 1);
-        (*id_)[i] = id;
-        (*position_)[i] = x;
+        id()[i] = grain_id;
+        position()[i] = x;
         (*velocity_)[i] = v;
         (*radius_)[i] = radius;
         (*mass_)[i] = grain_mass<Dim>(material.density, radius);
@@ -100,23 +102,12 @@ public:
     /// Appends one grain to a set built by hand (tests, tools), numbered in the order of adding.
     Index add(const Vec& x, double radius, const GrainMaterial& material, std::int32_t material_index,
               const Vec& v = Vec::zero()) {
-        return add(take_hand_built_id(), x, radius, material, material_index, v);
+        return add(this->take_hand_built_id(), x, radius, material, material_index, v);
     }
-    /// The next id of a set built by hand.
-    domain::ParticleId take_hand_built_id() {
-        return domain::make_particle_id({domain::IdKind::hand_built, 0}, next_hand_built_++);
-    }
+    using particles::ParticleSet<Dim>::take_hand_built_id;  // DemSystem's hand-built grains
     /// Reorders and/or removes grains: new[i] = old[source[i]].
     void gather(const std::vector<Index>& source) { fields_.gather(source); }
 
-    /// Every saved field into `group` (a checkpoint's grain set; ids come from their sources, which keep
-    /// their own counters).
-    void save(io::Hdf5Group& group) const { fields_.save(group); }
-    /// Reads back what save() wrote; the set must have the same fields registered.
-    void load(const io::Hdf5Group& group) { fields_.load(group); }
-
-    const domain::ParticleId* id() const noexcept { return id_->data(); }
-    Vec* position() noexcept { return position_->data(); }
     Vec* velocity() noexcept { return velocity_->data(); }
     SpinT* angular_velocity() noexcept { return angular_velocity_->data(); }
     Vec* force() noexcept { return force_->data(); }
@@ -128,7 +119,6 @@ public:
     std::int32_t* collisions() noexcept { return collisions_->data(); }
     std::int32_t* grain_contact() noexcept { return grain_contact_->data(); }
 
-    const Vec* position() const noexcept { return position_->data(); }
     const Vec* velocity() const noexcept { return velocity_->data(); }
     const SpinT* angular_velocity() const noexcept { return angular_velocity_->data(); }
     const Vec* force() const noexcept { return force_->data(); }
@@ -141,35 +131,23 @@ public:
     const std::int32_t* grain_contact() const noexcept { return grain_contact_->data(); }
 
     /// Points and every output field (grains/*.vtu).
-    io::PointCloud snapshot() const {
-        io::PointCloud cloud;
-        cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
-        const Vec* x = position();
-        for (Index i = 0; i < size(); ++i)
-            for (int k = 0; k < Dim; ++k) cloud.points[3 * static_cast<std::size_t>(i) + k] = x[i][k];
-        fields_.append_output(cloud);
-        return cloud;
-    }
+    io::PointCloud snapshot() const { return this->point_cloud(); }
 
 private:
     void rebind() {
-        id_ = &fields_.get<domain::ParticleId>("id");
-        position_ = &fields_.get<Vec>("position");
-        velocity_ = &fields_.get<Vec>("velocity");
-        angular_velocity_ = &fields_.get<SpinT>("angular_velocity");
-        force_ = &fields_.get<Vec>("force");
-        torque_ = &fields_.get<SpinT>("torque");
-        radius_ = &fields_.get<double>("radius");
-        mass_ = &fields_.get<double>("mass");
-        inertia_ = &fields_.get<double>("inertia");
-        material_ = &fields_.get<std::int32_t>("material");
-        collisions_ = &fields_.get<std::int32_t>("collisions");
-        grain_contact_ = &fields_.get<std::int32_t>("grain_contact");
+        velocity_ = &fields_.template get<Vec>("velocity");
+        angular_velocity_ = &fields_.template get<SpinT>("angular_velocity");
+        force_ = &fields_.template get<Vec>("force");
+        torque_ = &fields_.template get<SpinT>("torque");
+        radius_ = &fields_.template get<double>("radius");
+        mass_ = &fields_.template get<double>("mass");
+        inertia_ = &fields_.template get<double>("inertia");
+        material_ = &fields_.template get<std::int32_t>("material");
+        collisions_ = &fields_.template get<std::int32_t>("collisions");
+        grain_contact_ = &fields_.template get<std::int32_t>("grain_contact");
     }
 
-    particles::FieldRegistry fields_;
-    particles::Field<domain::ParticleId>* id_;
-    particles::Field<Vec>* position_;
+    using particles::ParticleSet<Dim>::fields_;
     particles::Field<Vec>* velocity_;
     particles::Field<SpinT>* angular_velocity_;
     particles::Field<Vec>* force_;
@@ -180,7 +158,6 @@ private:
     particles::Field<std::int32_t>* material_;
     particles::Field<std::int32_t>* collisions_;
     particles::Field<std::int32_t>* grain_contact_;
-    std::int64_t next_hand_built_ = 0;
 };
 
 /// The `fixed` flags of the grains (1: held in place, [[grains]].fixed), or null when no grain is fixed

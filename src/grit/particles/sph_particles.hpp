@@ -12,44 +12,45 @@
 #include "grit/core/vec.hpp"
 #include "grit/domain/particle_id.hpp"
 #include "grit/particles/field_registry.hpp"
+#include "grit/particles/particle_set.hpp"
 
 namespace grit::particles {
 
 template <int Dim>
-class SphParticles {
+class SphParticles : public ParticleSet<Dim> {
 public:
     using Vec = core::Vec<Dim>;
+    using ParticleSet<Dim>::size;
+    using ParticleSet<Dim>::id;
+    using ParticleSet<Dim>::position;
 
-    SphParticles()
-        : position_(&fields_.add<Vec>("position", Vec::zero(), false)),
-          velocity_(&fields_.add<Vec>("velocity", Vec::zero(), true)),
-          velocity_half_(&fields_.add<Vec>("velocity_half", Vec::zero(), false)),
-          acceleration_(&fields_.add<Vec>("acceleration", Vec::zero(), false)),
-          density_(&fields_.add<double>("density", 0.0, true)),
-          density_half_(&fields_.add<double>("density_half", 0.0, false)),
-          density_rate_(&fields_.add<double>("density_rate", 0.0, false)),
-          pressure_(&fields_.add<double>("pressure", 0.0, true)),
-          mass_(&fields_.add<double>("mass", 0.0, true)),
-          phase_(&fields_.add<std::int32_t>("phase", 0, true)),
-          material_(&fields_.add<std::int32_t>("material", 0, true)),
-          id_(&fields_.add<domain::ParticleId>("id", -1, true)) {}
+    /// Registers the fields every SPH particle has, in the order snapshots and checkpoints list them.
+    SphParticles() {
+        fields_.template add<Vec>("position", Vec::zero(), false);
+        velocity_ = &fields_.template add<Vec>("velocity", Vec::zero(), true);
+        velocity_half_ = &fields_.template add<Vec>("velocity_half", Vec::zero(), false);
+        acceleration_ = &fields_.template add<Vec>("acceleration", Vec::zero(), false);
+        density_ = &fields_.template add<double>("density", 0.0, true);
+        density_half_ = &fields_.template add<double>("density_half", 0.0, false);
+        density_rate_ = &fields_.template add<double>("density_rate", 0.0, false);
+        pressure_ = &fields_.template add<double>("pressure", 0.0, true);
+        mass_ = &fields_.template add<double>("mass", 0.0, true);
+        phase_ = &fields_.template add<std::int32_t>("phase", 0, true);
+        material_ = &fields_.template add<std::int32_t>("material", 0, true);
+        fields_.template add<domain::ParticleId>("id", -1, true);
+        this->bind();
+    }
 
-    SphParticles(const SphParticles& o)
-        : fields_(o.fields_), next_hand_built_(o.next_hand_built_), generation_(o.generation_), removal_(o.removal_) {
+    SphParticles(const SphParticles& o) : ParticleSet<Dim>(o), generation_(o.generation_), removal_(o.removal_) {
         rebind();
     }
     SphParticles& operator=(const SphParticles& o) {
-        fields_ = o.fields_;
-        next_hand_built_ = o.next_hand_built_;
+        ParticleSet<Dim>::operator=(o);
         generation_ = o.generation_;
         removal_ = o.removal_;
         rebind();
         return *this;
     }
-
-    FieldRegistry& fields() noexcept { return fields_; }
-    const FieldRegistry& fields() const noexcept { return fields_; }
-    Index size() const noexcept { return fields_.size(); }
 
     /// Grows the set by n particles made by `source` with serials first_serial, first_serial + 1, ...
     /// (their ids by origin, domain/particle_id.hpp; fields take their fill values) and returns the first
@@ -66,16 +67,12 @@ public:
         std::vector<domain::ParticleId> ids(serials.size());
         for (std::size_t k = 0; k < serials.size(); ++k) ids[k] = domain::make_particle_id(source, serials[k]);
         fields_.resize(first + static_cast<Index>(serials.size()));
-        std::copy(ids.begin(), ids.end(), id_->data() + first);
+        std::copy(ids.begin(), ids.end(), id() + first);
         ++generation_;
         return first;
     }
     /// Grows a set built by hand (tests, tools) by n particles, numbered in the order of appending.
-    Index append(Index n) {
-        const Index first = append(n, {domain::IdKind::hand_built, 0}, next_hand_built_);
-        next_hand_built_ += n;
-        return first;
-    }
+    Index append(Index n) { return append(n, {domain::IdKind::hand_built, 0}, this->take_hand_built_serials(n)); }
     /// Grows the set by n mirror images (a symmetry plane's ghosts, modules/symmetry_plane.*): they take
     /// no identifier of their own; the caller gives each the id image_id(source id) and its source's values.
     Index append_images(Index n) {
@@ -89,7 +86,7 @@ public:
     static constexpr domain::ParticleId image_id(domain::ParticleId source) noexcept { return -2 - source; }
     static constexpr domain::ParticleId image_source(domain::ParticleId image) noexcept { return -2 - image; }
     static constexpr bool is_image_id(domain::ParticleId id) noexcept { return id <= -2; }
-    bool is_image(Index i) const noexcept { return is_image_id((*id_)[i]); }
+    bool is_image(Index i) const noexcept { return is_image_id(id()[i]); }
     /// How many images the set holds.
     Index image_count() const noexcept {
         Index n = 0;
@@ -99,7 +96,7 @@ public:
     /// Starts new particle i (from append) at position x, velocity v and density rho, with mass m, phase
     /// and material; the half-step velocity and density start equal to v and rho.
     void start(Index i, const Vec& x, const Vec& v, double rho, double m, Phase phase, std::int32_t material) {
-        (*position_)[i] = x;
+        position()[i] = x;
         (*velocity_)[i] = v;
         (*velocity_half_)[i] = v;
         (*density_)[i] = rho;
@@ -137,16 +134,12 @@ public:
     /// Changes each time particles are added, removed or reordered: per-particle data kept outside the
     /// registry (neighbour lists, per-step scratch) records it and is valid while it is unchanged.
     std::uint64_t generation() const noexcept { return generation_; }
-    /// Every saved field into `group` (a checkpoint's particle set; ids come from their sources, which
-    /// keep their own counters).
-    void save(io::Hdf5Group& group) const { fields_.save(group); }
-    /// Reads back what save() wrote; the set must have the same fields registered.
+    /// Reads back what save() wrote (a new generation); the set must have the same fields registered.
     void load(const io::Hdf5Group& group) {
-        fields_.load(group);
+        ParticleSet<Dim>::load(group);
         ++generation_;
     }
 
-    Vec* position() noexcept { return position_->data(); }
     Vec* velocity() noexcept { return velocity_->data(); }
     Vec* acceleration() noexcept { return acceleration_->data(); }
     /// Leap-frog state: velocity and density at the half step t + dt/2 (velocity() and density()
@@ -159,12 +152,7 @@ public:
     double* mass() noexcept { return mass_->data(); }
     std::int32_t* phase() noexcept { return phase_->data(); }
     std::int32_t* material() noexcept { return material_->data(); }
-    domain::ParticleId* id() noexcept { return id_->data(); }
-    /// A particle's identifier by origin: unique, kept through sorting, removal and (over many processes)
-    /// migration (for tracking particles and finding them again).
-    const domain::ParticleId* id() const noexcept { return id_->data(); }
 
-    const Vec* position() const noexcept { return position_->data(); }
     const Vec* velocity() const noexcept { return velocity_->data(); }
     const double* density() const noexcept { return density_->data(); }
     const double* pressure() const noexcept { return pressure_->data(); }
@@ -183,33 +171,24 @@ public:
             copy.gather(keep);
             return copy.snapshot();
         }
-        io::PointCloud cloud;
-        cloud.points.assign(static_cast<std::size_t>(size()) * 3, 0.0);
-        const Vec* x = position();
-        for (Index i = 0; i < size(); ++i)
-            for (int k = 0; k < Dim; ++k) cloud.points[3 * static_cast<std::size_t>(i) + k] = x[i][k];
-        fields_.append_output(cloud, phase(), material());
-        return cloud;
+        return this->point_cloud(phase(), material());
     }
 
 private:
     void rebind() {
-        position_ = &fields_.get<Vec>("position");
-        velocity_ = &fields_.get<Vec>("velocity");
-        velocity_half_ = &fields_.get<Vec>("velocity_half");
-        acceleration_ = &fields_.get<Vec>("acceleration");
-        density_ = &fields_.get<double>("density");
-        density_half_ = &fields_.get<double>("density_half");
-        density_rate_ = &fields_.get<double>("density_rate");
-        pressure_ = &fields_.get<double>("pressure");
-        mass_ = &fields_.get<double>("mass");
-        phase_ = &fields_.get<std::int32_t>("phase");
-        material_ = &fields_.get<std::int32_t>("material");
-        id_ = &fields_.get<domain::ParticleId>("id");
+        velocity_ = &fields_.template get<Vec>("velocity");
+        velocity_half_ = &fields_.template get<Vec>("velocity_half");
+        acceleration_ = &fields_.template get<Vec>("acceleration");
+        density_ = &fields_.template get<double>("density");
+        density_half_ = &fields_.template get<double>("density_half");
+        density_rate_ = &fields_.template get<double>("density_rate");
+        pressure_ = &fields_.template get<double>("pressure");
+        mass_ = &fields_.template get<double>("mass");
+        phase_ = &fields_.template get<std::int32_t>("phase");
+        material_ = &fields_.template get<std::int32_t>("material");
     }
 
-    FieldRegistry fields_;
-    Field<Vec>* position_;
+    using ParticleSet<Dim>::fields_;
     Field<Vec>* velocity_;
     Field<Vec>* velocity_half_;
     Field<Vec>* acceleration_;
@@ -220,8 +199,6 @@ private:
     Field<double>* mass_;
     Field<std::int32_t>* phase_;
     Field<std::int32_t>* material_;
-    Field<domain::ParticleId>* id_;
-    std::int64_t next_hand_built_ = 0;
     std::uint64_t generation_ = 0;
     // The removals since generation `from`, up to `to` (the current one while nothing else changed).
     struct Removal {
