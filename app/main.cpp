@@ -165,9 +165,9 @@ void print_pipeline(const std::vector<grit::sim::StageInfo>& stages) {
         text.erase(text.find_last_not_of(' ') + 1);
         fmt::print("{}\n", text);
     };
-    line(fmt::format("  {:<11} {:<28} {:<16} {}", "hook", "stage", "module", "prime"));
+    line(fmt::format("  {:<15} {:<28} {:<16} {}", "hook", "stage", "module", "prime"));
     for (const auto& s : stages)
-        line(fmt::format("  {:<11} {:<28} {:<16} {}", grit::sim::hook_name(s.hook), s.name, s.module, s.prime ? "yes" : ""));
+        line(fmt::format("  {:<15} {:<28} {:<16} {}", grit::sim::hook_name(s.hook), s.name, s.module, s.prime ? "yes" : ""));
 }
 
 /// --threads N: a positive whole number (checked here: CLI11's range check prints a 300-digit bound).

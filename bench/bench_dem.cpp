@@ -27,7 +27,7 @@ void DemSettle(benchmark::State& state) {
         state.PauseTiming();
         grit::dem::DemSystem<3> sys = grit::bench::dem_settle(nxy, nz);
         state.ResumeTiming();
-        for (int k = 0; k < steps; ++k) sys.step(1e-5);
+        for (int k = 0; k < steps; ++k) sys.step(1e-5, k * 1e-5);
         state.PauseTiming();
         grains = sys.grains().size();
         kinetic = sys.kinetic_energy();

@@ -41,8 +41,8 @@ std::vector<double> drop_apexes(const std::string& law, double e, int bounces, d
     const double e0 = mass * g * height;
     std::vector<double> apex;
     double worst = 0.0, v_prev = 0.0;
-    while (static_cast<int>(apex.size()) < bounces && sys.time() < 3.0) {
-        sys.step(dt);
+    for (double t = 0.0; static_cast<int>(apex.size()) < bounces && t < 3.0; t += dt) {
+        sys.step(dt, t);
         const double y = sys.grains().position()[0][1], v = sys.grains().velocity()[0][1];
         if (y > radius) worst = std::max(worst, std::abs(0.5 * mass * v * v + mass * g * y - e0) / e0);
         if (v_prev > 0.0 && v <= 0.0) apex.push_back(y);
@@ -103,7 +103,7 @@ TEST(DemHertzImpact, DurationAndPeakForceMatchJohnson) {
     const double dt = tc / 1000.0;
     double contact_time = 0.0, peak = 0.0;
     for (int k = 0; k < 4000; ++k) {
-        sys.step(dt);
+        sys.step(dt, k * dt);
         const double f = std::abs(sys.grains().force()[0][0]);
         if (f > 0.0) contact_time += dt;
         peak = std::max(peak, f);
@@ -141,12 +141,13 @@ std::pair<double, double> incline(double theta_deg, double mu, bool locked, cons
     const double dt = 0.5 * sys.stable_time_step();
     const double t1 = 0.05, t2 = 0.15;
     double x1 = 0.0, v1 = 0.0;
-    while (sys.time() < t1) sys.step(dt);
+    double t = 0.0;
+    for (; t < t1; t += dt) sys.step(dt, t);
     x1 = sys.grains().position()[0][0];
     v1 = sys.grains().velocity()[0][0];
-    const double start = sys.time();
-    while (sys.time() < t2) sys.step(dt);
-    return {sys.grains().position()[0][0] - x1, (sys.grains().velocity()[0][0] - v1) / (sys.time() - start)};
+    const double start = t;
+    for (; t < t2; t += dt) sys.step(dt, t);
+    return {sys.grains().position()[0][0] - x1, (sys.grains().velocity()[0][0] - v1) / (t - start)};
 }
 
 }  // namespace

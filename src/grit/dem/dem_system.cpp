@@ -141,11 +141,22 @@ void DemSystem<Dim>::cut_pairs() {
 
 template <int Dim>
 void DemSystem<Dim>::update_neighbors() {
-    if (lists_dirty_ || list_.stale(std::as_const(grains_).position(), grains_.size())) rebuild_neighbors();
+    const Index n = grains_.size();
+    // The drift's measure when it was taken against these lists, else a pass of its own.
+    const double moved2 = drift2_;
+    drift2_ = -1.0;
+    if (lists_dirty_ || list_.grain_count() != n) {
+        rebuild_neighbors();
+    } else if (moved2 >= 0.0 ? list_.stale(moved2, n) : list_.stale(std::as_const(grains_).position(), n)) {
+        rebuild_neighbors();
+    }
 }
 
 template <int Dim>
-void DemSystem<Dim>::kick_drift(double dt) {
+void DemSystem<Dim>::drift(double dt, double time) {
+    // Forces of a state no step has computed yet (new grains or walls): dt = 0 leaves the histories as
+    // they are, so a repeated evaluation does not count their increment twice.
+    if (!forces_ready_) compute_forces(0.0, time);
     const Index n = grains_.size();
     // The skin check rides on the drift's pass; fresh lists are due anyway when they are dirty.
     const bool check = !lists_dirty_ && list_.grain_count() == n;
@@ -153,14 +164,14 @@ void DemSystem<Dim>::kick_drift(double dt) {
     double d2 = 0.0;
     if (parameters_.grain_pairs) {
         // The pair pass's sums cleared in the same pass, while each grain's lines are loaded (a pass of
-        // its own cost 7 % of a settling step); a rebuild below reorders the grains and unsets the flag.
+        // its own cost 7 % of a settling step); a rebuild reorders the grains and unsets the flag.
         prepare_pair_sums(grains_, scratch_);
         d2 = kick_drift_grains(grains_, 0.5 * dt, dt, reference, PairSumsClearing<Dim>(grains_, scratch_));
         scratch_.sums_cleared = true;
     } else {
         d2 = kick_drift_grains(grains_, 0.5 * dt, dt, reference);
     }
-    if (!check || list_.stale(d2, n)) rebuild_neighbors();
+    drift2_ = check ? d2 : -1.0;
 }
 
 template <int Dim>
@@ -208,36 +219,30 @@ void DemSystem<Dim>::force_stage(double dt, double half_kick, double time) {
 }
 
 template <int Dim>
-void DemSystem<Dim>::compute_forces(double dt) {
+void DemSystem<Dim>::compute_forces(double dt, double time) {
     update_neighbors();
-    force_stage(dt, 0.0, time_);
+    force_stage(dt, 0.0, time);
 }
 
 template <int Dim>
-void DemSystem<Dim>::begin_step(double dt) {
-    // Forces of a state no step has computed yet (new grains or walls): dt = 0 leaves the histories as
-    // they are, so a repeated evaluation does not count their increment twice.
-    if (!forces_ready_) compute_forces(0.0);
-    kick_drift(dt);
-    force_stage(dt, 0.0, time_ + dt);
+void DemSystem<Dim>::compute_contact_forces(double dt, double time) {
+    force_stage(dt, 0.0, time);
 }
 
 template <int Dim>
-void DemSystem<Dim>::end_step(double dt) {
+void DemSystem<Dim>::kick(double dt) {
     kick_grains(grains_, 0.5 * dt);
-    time_ += dt;
     ++counters_.steps;
 }
 
 template <int Dim>
-void DemSystem<Dim>::step(double dt) {
-    // begin_step then end_step, with the second half kick in the force stage's completion: two passes over
-    // the grains a step (kick, drift and the sums' clearing; the pairs, each grain completed and kicked
-    // inside it), three with mesh walls (their contacts come before the completion).
-    if (!forces_ready_) compute_forces(0.0);
-    kick_drift(dt);
-    force_stage(dt, 0.5 * dt, time_ + dt);
-    time_ += dt;
+void DemSystem<Dim>::step(double dt, double time) {
+    // The phases with the second half kick in the force stage's completion: two passes over the grains a
+    // step (kick, drift and the sums' clearing; the pairs, each grain completed and kicked inside it),
+    // three with mesh walls (their contacts come before the completion).
+    drift(dt, time);
+    update_neighbors();
+    force_stage(dt, 0.5 * dt, time + dt);
     ++counters_.steps;
 }
 
@@ -308,7 +313,6 @@ template <int Dim>
 void DemSystem<Dim>::save(io::Hdf5Group& group) const {
     auto set = group.create_group("grains");
     grains_.save(set);
-    group.write("time", time_);
     group.write("skin", skin_);
     group.write("forces_ready", std::int64_t{forces_ready_});
     group.write("lists_dirty", std::int64_t{lists_dirty_});
@@ -327,7 +331,6 @@ void DemSystem<Dim>::save(io::Hdf5Group& group) const {
 template <int Dim>
 void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     grains_.load(group.open_group("grains"));
-    time_ = group.read_double("time");
     skin_ = group.read_double("skin");
     forces_ready_ = group.read_int("forces_ready") != 0;
     lists_dirty_ = group.read_int("lists_dirty") != 0;
@@ -335,6 +338,7 @@ void DemSystem<Dim>::load(const io::Hdf5Group& group) {
     counters_.steps = group.read_int("steps");
     counters_.rebuilds = group.read_int("rebuilds");
     history_.read(group.open_group("contact_history"));
+    drift2_ = -1.0;
     list_ = GrainNeighborList<Dim>();
     cut_pairs();
     if (lists_dirty_ || grains_.size() == 0) return;

@@ -1,6 +1,7 @@
-// A self-contained DEM system: the grain set, its neighbour lists and contact history, plane walls, the
-// chosen contact law and materials, and the velocity-Verlet step. The SPH pipeline calls begin_step,
-// adds its forces to grains().force()/torque(), then end_step; a DEM-only run calls step().
+// The grains' physics: the grain set, its neighbour lists and contact history, plane and mesh walls, the
+// chosen contact law and materials, and the phases of the velocity-Verlet step. A run calls the phases as
+// stages of its one pipeline (modules/grains.cpp), on its one clock: the system keeps no time of its own;
+// tests and benchmarks call step(), which runs them all.
 #pragma once
 
 #include <cstdint>
@@ -57,7 +58,6 @@ public:
     const std::vector<PlaneWall<Dim>>& walls() const noexcept { return walls_; }
     const ContactLaw& law() const noexcept { return law_; }
     const DemParameters<Dim>& parameters() const noexcept { return parameters_; }
-    double time() const noexcept { return time_; }
     const DemCounters& counters() const noexcept { return counters_; }
     const GrainNeighborList<Dim>& neighbors() const noexcept { return list_; }
     /// The lists cut into each pair once (partners of higher index): the pairs the contact pass evaluates
@@ -85,17 +85,28 @@ public:
     /// Reorders/removes grains (new[i] = old[source[i]]); contact history follows by id.
     void gather(const std::vector<Index>& source);
 
-    /// One velocity-Verlet step: begin_step(dt) then end_step(dt).
-    void step(double dt);
-    /// First half: half kick with the forces of the previous step, drift, neighbour update, then the
-    /// force stage: force = m g + contacts, torque = contacts. External stages (fluid drag, grain-solid
-    /// penalty) add to grains().force()/torque() after this and before end_step.
-    void begin_step(double dt);
-    /// Second half kick with the complete forces; advances time.
-    void end_step(double dt);
-    /// The force stage at the current state: force = m g + contacts, torque = contacts; the tangential
-    /// histories grow by v_t dt (dt = 0 evaluates forces without advancing them).
-    void compute_forces(double dt);
+    /// The phases of a velocity-Verlet step, in the order a run's stages call them. Between
+    /// compute_contact_forces and kick, other stages (fluid drag, grain-solid penalty) add to
+    /// grains().force()/torque(). `time` is the time at the start of the step (where moving meshes are
+    /// placed: at time + dt for the new positions).
+    ///
+    /// Half kick with the forces held: the second half of the step that computed them.
+    void kick(double dt);
+    /// First half kick with the forces held (computed first at `time` when no step has: new grains or
+    /// walls), then the drift; measures how far the grains moved since their lists were built.
+    void drift(double dt, double time);
+    /// New lists (grains wrapped and sorted by cell, histories carried over by id) when a grain has moved
+    /// more than skin/2 since they were built, or grains came or went.
+    void update_neighbors();
+    /// force = m g + contacts, torque = contacts at the current lists, the grains at time + dt; the
+    /// tangential histories grow by v_t dt.
+    void compute_contact_forces(double dt, double time);
+    /// One whole step from `time` (tests, benchmarks): drift, update_neighbors, compute_contact_forces
+    /// with the second half kick inside the force pass.
+    void step(double dt, double time);
+    /// The forces of the current state, at `time`: update_neighbors then the force stage (dt = 0
+    /// evaluates forces without advancing the histories).
+    void compute_forces(double dt, double time);
 
     /// Largest stable step for the chosen law over all grains: eq. (51) (alpha_tn = 300) for the linear
     /// law; for Hertz, 0.2 of the Rayleigh time and, if impact_speed > 0, 1/50 of the Hertz impact time
@@ -119,9 +130,6 @@ public:
     void load(const io::Hdf5Group& group);
 
 private:
-    void update_neighbors();
-    /// First half kick and drift, then fresh lists if a grain has moved more than skin/2.
-    void kick_drift(double dt);
     /// Contact, weight and wall forces at the current lists; with half_kick != 0 the second half kick.
     /// `time`: the time of the grains' positions (where moving meshes are placed).
     void force_stage(double dt, double half_kick, double time);
@@ -146,7 +154,9 @@ private:
     SlabBlocks blocks_;        // the pair pass's blocks over the current lists
     PairImages<Dim> images_;   // each listed pair's periodic image
     std::vector<Index> order_;
-    double time_ = 0.0;
+    // The largest squared move the last drift measured against the lists' positions; < 0: not measured
+    // (lists dirty or built for another set).
+    double drift2_ = -1.0;
     double skin_ = -1.0;
     bool forces_ready_ = false;
     bool lists_dirty_ = true;

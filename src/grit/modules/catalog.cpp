@@ -76,7 +76,8 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     }));
     table.push_back(plain<Dim, OpenBoundariesModule>("open_boundaries", before, [](const Spec& s) { return s.has_sph(); }));
     table.push_back(plain<Dim, ThinWallsModule>("thin_walls", before, [](const Spec& s) { return s.has_thin_walls(); }));
-    // The grains module builds the grains the next ones register fields on; its kick follows their forces.
+    // The grains module builds the grains the next ones register fields on. Its phases have hooks of their
+    // own after theirs; ordered after them, it keeps its place in the outputs' columns and the checkpoint.
     table.push_back(plain<Dim, GrainsModule>("grains", after, [](const Spec& s) { return s.has_grains(); },
                                              {"grain_contact", "coupling"}));
     table.push_back(plain<Dim, GrainContactModule>("grain_contact", after, [](const Spec& s) {
@@ -85,7 +86,7 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     table.push_back(plain<Dim, CouplingModule>("coupling", after, [](const Spec& s) {
         return s.has_grains() && s.has_sph() && s.coupling.enabled && has_fluid(s);
     }));
-    // The wear books the impacts of the grains' step; the feeds add grains after the grains' own exits.
+    // The wear books the impacts the grains' forces found; the feeds add grains after the grains' own exits.
     table.push_back(plain<Dim, MeshWearModule>("mesh_walls", after, [](const Spec& s) {
         return s.has_grains() && !s.meshes.empty();
     }, {"grains"}));

@@ -97,7 +97,11 @@ void GrainsModule<Dim>::install(sim::Pipeline& pipeline) {
     const auto& spec = setup_.spec;
     if (spec.remove_leaving || !spec.outlets.empty())
         pipeline.add(sim::Hook::boundaries, "grain_exit", [this] { remove_leaving(); });
-    pipeline.add(sim::Hook::post_force, "grain_motion", [this] { advance(); });
+    pipeline.add(sim::Hook::grain_motion, "grain_drift", [this] { move(); });
+    pipeline.add(sim::Hook::grain_neighbors, "grain_neighbors", [this] { state_.grains->update_neighbors(); });
+    pipeline.add(sim::Hook::grain_force, "grain_forces", [this] { contact_forces(); });
+    if (!state_.grains->walls().empty())
+        pipeline.add(sim::Hook::grain_force, "grain_plane_contacts", [this] { log_plane_contacts(); });
 }
 
 template <int Dim>
@@ -131,16 +135,26 @@ void GrainsModule<Dim>::remove_leaving() {
 
 template <int Dim>
 void GrainsModule<Dim>::prime() {
-    state_.grains->compute_forces(0.0);
+    state_.grains->compute_forces(0.0, state_.clock.time);
 }
 
 template <int Dim>
-void GrainsModule<Dim>::advance() {
+void GrainsModule<Dim>::move() {
+    auto& system = *state_.grains;
+    const double dt = state_.clock.dt;
+    if (state_.clock.step != 0) system.kick(dt);  // the step before's second half, with its whole forces
+    system.drift(dt, state_.clock.time);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::contact_forces() {
+    state_.grains->compute_contact_forces(state_.clock.dt, state_.clock.time + state_.clock.dt);
+}
+
+template <int Dim>
+void GrainsModule<Dim>::log_plane_contacts() {
     auto& system = *state_.grains;
     const double time = state_.clock.time, dt = state_.clock.dt;
-    if (state_.clock.step != 0) system.end_step(dt);
-    system.begin_step(dt);
-
     // First contacts with the plane walls, at the new positions.
     auto& grains = system.grains();
     std::int32_t* mask = grains.fields().template get<std::int32_t>("contact_targets").data();

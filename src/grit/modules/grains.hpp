@@ -43,9 +43,13 @@ public:
 private:
     /// The grains' leap-frog step, the SPH particles' scheme: v^(n+1/2) = v^(n-1/2) + dt a^n (two half
     /// kicks, the first half only on the first step), x^(n+1) = x^n + dt v^(n+1/2), then grain-grain and
-    /// plane forces at x^(n+1). Kicking grains and SPH particles with the same dt makes the exchanged
-    /// impulses equal and opposite. Logs first contacts with the planes at time + dt.
-    void advance();
+    /// plane forces at x^(n+1), in three stages at three hooks (motion, neighbours, force) so that other
+    /// stages can come between them. Kicking grains and SPH particles with the same dt makes the
+    /// exchanged impulses equal and opposite.
+    void move();
+    void contact_forces();
+    /// Logs first contacts with the planes at time + dt.
+    void log_plane_contacts();
 
     /// Removes the grains inside an outlet or (domain.on_exit = "remove") outside the domain.
     void remove_leaving();

@@ -39,8 +39,8 @@ MeshWearModule<Dim>::MeshWearModule(sim::State<Dim>& state, const sim::RunSetup<
 
 template <int Dim>
 void MeshWearModule<Dim>::install(sim::Pipeline& pipeline) {
-    // After the grains' step, which found this step's mesh contacts at the new positions.
-    pipeline.add(sim::Hook::post_force, "mesh_wear", [this] { book(); });
+    // After the grains' forces, which found this step's mesh contacts at the new positions.
+    pipeline.add(sim::Hook::grain_force, "mesh_wear", [this] { book(); });
 }
 
 template <int Dim>

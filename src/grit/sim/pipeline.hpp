@@ -21,7 +21,10 @@ enum class Hook {
     pressure,    ///< equations of state
     pre_force,   ///< what the force sums read (wall pressure, per-step scratch)
     force,       ///< the SPH sums
-    post_force,  ///< forces between particle sets (grain contact, coupling), then the grains' step
+    post_force,  ///< forces between particle sets (grain contact, coupling)
+    grain_motion,     ///< the grains' kicks (the step before's second half, this one's first) and drift
+    grain_neighbors,  ///< the grains' lists, when a grain has moved more than half the skin
+    grain_force,      ///< the grains' contact forces at their new positions, and what reads them
     integrate,   ///< second half of the integrator
     end_step,    ///< material updates, removals
     check,       ///< health check and the next time step (the Simulation's own)
@@ -37,6 +40,9 @@ inline const char* hook_name(Hook h) {
         case Hook::pre_force: return "pre_force";
         case Hook::force: return "force";
         case Hook::post_force: return "post_force";
+        case Hook::grain_motion: return "grain_motion";
+        case Hook::grain_neighbors: return "grain_neighbors";
+        case Hook::grain_force: return "grain_force";
         case Hook::integrate: return "integrate";
         case Hook::end_step: return "end_step";
         case Hook::check: return "check";

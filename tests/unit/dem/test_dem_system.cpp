@@ -79,7 +79,7 @@ TEST(DemSystem, PairForcesAreEqualAndOppositeBitForBit) {
         sys.add_grain(Vec<3>{{0.0, 0.0, 0.0}}, 0.0015, 0, Vec<3>{{0.1, 0.02, -0.03}});
         sys.add_grain(Vec<3>{{0.0025, 0.0003, 0.0001}}, 0.0012, 0, Vec<3>{{-0.1, 0.05, 0.01}});
         sys.grains().angular_velocity()[0] = Vec<3>{{3.0, -1.0, 2.0}};
-        for (int k = 0; k < 5; ++k) sys.step(1e-6);
+        for (int k = 0; k < 5; ++k) sys.step(1e-6, k * 1e-6);
         const Vec<3>* f = sys.grains().force();
         ASSERT_GT(grit::core::norm(f[0]), 0.0) << law;
         for (int c = 0; c < 3; ++c) EXPECT_EQ(f[0][c], -f[1][c]) << law;
@@ -93,14 +93,14 @@ TEST(DemSystem, PairForcesAreEqualAndOppositeBitForBit) {
 // same to round-off (force sums are added in another order).
 TEST(DemSystem, ContactHistorySurvivesReSorting) {
     DemSystem<3> a = settling_box("hertz", 6), b = settling_box("hertz", 6);
-    for (int k = 0; k < 3000; ++k) a.step(1e-5), b.step(1e-5);
+    for (int k = 0; k < 3000; ++k) a.step(1e-5, k * 1e-5), b.step(1e-5, k * 1e-5);
     ASSERT_GT(a.contact_history().active_pairs(), 50u);
     std::vector<Index> shuffle(static_cast<std::size_t>(b.grains().size()));
     std::iota(shuffle.begin(), shuffle.end(), 0);
     std::shuffle(shuffle.begin(), shuffle.end(), std::mt19937_64(5));
     b.gather(shuffle);
-    a.step(1e-5);
-    b.step(1e-5);
+    a.step(1e-5, 3000 * 1e-5);
+    b.step(1e-5, 3000 * 1e-5);
     const auto ha = history_by_ids(a), hb = history_by_ids(b);
     EXPECT_EQ(ha.size(), hb.size());
     for (const auto& [key, v] : ha) {
@@ -109,7 +109,7 @@ TEST(DemSystem, ContactHistorySurvivesReSorting) {
         for (int c = 0; c < 3; ++c)
             EXPECT_EQ(v[c], it->second[c]) << "pair " << key.first << "-" << key.second << " component " << c;
     }
-    for (int k = 0; k < 500; ++k) a.step(1e-5), b.step(1e-5);
+    for (int k = 3001; k < 3501; ++k) a.step(1e-5, k * 1e-5), b.step(1e-5, k * 1e-5);
     const auto pa = positions_by_id(a), pb = positions_by_id(b);
     double worst = 0.0;
     for (const auto& [id, x] : pa) worst = std::max(worst, grit::core::norm(x - pb.at(id)));
@@ -124,7 +124,7 @@ TEST(DemSystem, OneAndTwoThreadsGiveIdenticalGrains) {
         // coloured blocks (SlabBlocks) in parallel. A lattice of 2.9 mm for 3 mm grains: every grain
         // touches its neighbours from the first step.
         DemSystem<3> sys = settling_box("hertz", 24, 0.0029);
-        for (int k = 0; k < 200; ++k) sys.step(1e-5);
+        for (int k = 0; k < 200; ++k) sys.step(1e-5, k * 1e-5);
         ASSERT_GE(sys.grains().size(), grit::parallel::serial_below);
         ASSERT_GE(sys.neighbors().slab_starts().size(), 7u);
         ASSERT_GT(sys.contact_history().active_pairs(), 2000u);
@@ -160,7 +160,7 @@ TEST(DemSystem, MomentumOfAClosedCloudIsConserved) {
             return std::pair{m, scale};
         };
         const auto [p0, scale] = momentum();
-        for (int k = 0; k < 2000; ++k) sys.step(2e-6);
+        for (int k = 0; k < 2000; ++k) sys.step(2e-6, k * 2e-6);
         EXPECT_GT(sys.counters().rebuilds, 1);
         const auto [p1, scale1] = momentum();
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(p1[c], p0[c], 1e-13 * scale) << law;
@@ -170,13 +170,13 @@ TEST(DemSystem, MomentumOfAClosedCloudIsConserved) {
 
 TEST(DemSystem, RemovingGrainsKeepsTheOthersHistory) {
     DemSystem<3> sys = settling_box("linear", 5);
-    for (int k = 0; k < 3000; ++k) sys.step(1e-5);
+    for (int k = 0; k < 3000; ++k) sys.step(1e-5, k * 1e-5);
     const auto before = history_by_ids(sys);
     std::vector<Index> keep;
     for (Index i = 0; i < sys.grains().size(); ++i)
         if (sys.grains().id()[i] % 7 != 0) keep.push_back(i);
     sys.gather(keep);
-    sys.compute_forces(0.0);  // rebuilds the lists; dt = 0 leaves the histories as they were
+    sys.compute_forces(0.0, 3000 * 1e-5);  // rebuilds the lists; dt = 0 leaves the histories as they were
     const auto after = history_by_ids(sys);
     ASSERT_FALSE(after.empty());
     for (const auto& [ids, v] : after) {
@@ -199,19 +199,24 @@ TEST(DemSystem, CountsACollisionOnceAsItsContactBegins) {
     const auto& g = sys.grains();
     auto gap = [&] { return std::abs(g.position()[1][0] - g.position()[0][0]) - 2.0 * r; };
     const double dt = 1e-6;
+    double t = 0.0;
+    auto step = [&] {
+        sys.step(dt, t);
+        t += dt;
+    };
     for (int round = 1; round <= 2; ++round) {
         int steps_in_contact = 0;
-        while (gap() > 0.0) sys.step(dt);  // closing
-        while (gap() <= 0.0) {             // touching
+        while (gap() > 0.0) step();  // closing
+        while (gap() <= 0.0) {       // touching
             ++steps_in_contact;
-            sys.compute_forces(0.0);
+            sys.compute_forces(0.0, t);
             for (Index i = 0; i < 2; ++i) {
                 ASSERT_EQ(g.collisions()[i], round) << "grain " << i << ", step " << steps_in_contact;
                 ASSERT_EQ(g.grain_contact()[i], 1);
             }
-            sys.step(dt);
+            step();
         }
-        sys.step(dt);  // apart: the next pass sees it
+        step();  // apart: the next pass sees it
         EXPECT_GT(steps_in_contact, 10);
         for (Index i = 0; i < 2; ++i) {
             EXPECT_EQ(g.collisions()[i], round);
@@ -231,7 +236,7 @@ TEST(DemSystem, GrainsWithoutPairContactPassThroughEachOther) {
     const double r = 0.0015;
     sys.add_grain(Vec<2>{{-r - 1e-5, 0.0}}, r, 0, Vec<2>{{1.0, 0.0}});
     sys.add_grain(Vec<2>{{r + 1e-5, 0.0}}, r, 0, Vec<2>{{-1.0, 0.0}});
-    for (int k = 0; k < 2000; ++k) sys.step(1e-6);  // 2 mm of travel each: through and past each other
+    for (int k = 0; k < 2000; ++k) sys.step(1e-6, k * 1e-6);  // 2 mm of travel each: through and past each other
     const auto& g = sys.grains();
     for (Index i = 0; i < 2; ++i) {
         const double v0 = g.id()[i] == 0 ? 1.0 : -1.0;
@@ -247,7 +252,7 @@ TEST(DemSystem, GrainsWithoutPairContactPassThroughEachOther) {
 // says (it touches another grain), and it has counted at least as many collisions as it has contacts.
 TEST(DemSystem, ContactFlagsFollowTheGrainsThroughReSorting) {
     DemSystem<3> sys = settling_box("hertz", 6);
-    for (int k = 0; k < 3000; ++k) sys.step(1e-5);
+    for (int k = 0; k < 3000; ++k) sys.step(1e-5, k * 1e-5);
     ASSERT_GT(sys.counters().rebuilds, 3);
     const auto& g = sys.grains();
     const Index n = g.size();
@@ -296,7 +301,7 @@ TEST(DemSystem, FrictionlessPlaneKeepsTheTangentialVelocity) {
         const auto& g = sys.grains();
         bool touched = false;
         for (int k = 0; k < 20000 && !(touched && g.position()[0][0] > r + 1e-5); ++k) {
-            sys.step(1e-7);
+            sys.step(1e-7, k * 1e-7);
             touched |= g.position()[0][0] < r;
         }
         ASSERT_TRUE(touched);
@@ -325,8 +330,69 @@ TEST(DemSystem, FrictionlessPlaneLetsStraddlingGrainsPass) {
     const Index flagged = g.id()[0] == 0 ? 0 : 1;
     sys.grains().fields().get<std::int32_t>(straddling_field)[flagged] = 1;
     const ParticleId flagged_id = g.id()[flagged];
-    for (int k = 0; k < 100; ++k) sys.step(1e-6);
+    for (int k = 0; k < 100; ++k) sys.step(1e-6, k * 1e-6);
     const Index a = g.id()[0] == flagged_id ? 0 : 1;
     EXPECT_EQ(g.velocity()[a][0], -0.5);
     EXPECT_GT(g.velocity()[1 - a][0], 0.0);  // pushed out
+}
+
+// The step's phases, called as a run's stages call them (kick, drift, lists, forces), give step()'s grains
+// bit for bit: step() is the same phases with the second half kick inside the force pass.
+TEST(DemSystem, PhasesAsStagesAreTheFusedStep) {
+    DemSystem<3> fused = settling_box("hertz", 5), staged = settling_box("hertz", 5);
+    const double dt = 1e-5;
+    staged.compute_forces(0.0, 0.0);
+    for (int k = 0; k < 2000; ++k) {
+        fused.step(dt, k * dt);
+        if (k > 0) staged.kick(dt);
+        staged.drift(dt, k * dt);
+        staged.update_neighbors();
+        staged.compute_contact_forces(dt, (k + 1) * dt);
+    }
+    staged.kick(dt);
+    ASSERT_GT(fused.contact_pairs(), 20u);
+    EXPECT_EQ(fused.counters().rebuilds, staged.counters().rebuilds);
+    const auto a = positions_by_id(fused), b = positions_by_id(staged);
+    for (const auto& [id, x] : a)
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(x[c], b.at(id)[c]) << "grain " << id << " component " << c;
+}
+
+// A stage between the phases is felt as the grains' own forces are: weight added after the contact forces
+// (as the coupling adds drag) settles the bed as gravity inside the force pass does, to round-off (the
+// same terms added in another order).
+TEST(DemSystem, AForceAddedBetweenThePhasesActsAsTheGrainsOwn) {
+    DemSystem<3> inside = settling_box("hertz", 5);
+    DemParameters<3> p = inside.parameters();
+    const grit::core::Vec<3> g = p.gravity;
+    p.gravity = Vec<3>::zero();
+    DemSystem<3> outside(p, {soft_glass()});
+    for (Index i = 0; i < inside.grains().size(); ++i)
+        outside.add_grain(inside.grains().position()[i], inside.grains().radius()[i], 0);
+    outside.add_wall(inside.walls().front());
+    auto add_weight = [&] {
+        auto& grains = outside.grains();
+        for (Index i = 0; i < grains.size(); ++i) grains.force()[i] += g * grains.mass()[i];
+    };
+    const double dt = 1e-5;
+    inside.compute_forces(0.0, 0.0);
+    outside.compute_forces(0.0, 0.0);
+    add_weight();
+    for (int k = 0; k < 400; ++k) {
+        for (auto* s : {&inside, &outside}) {
+            if (k > 0) s->kick(dt);
+            s->drift(dt, k * dt);
+            s->update_neighbors();
+            s->compute_contact_forces(dt, (k + 1) * dt);
+        }
+        add_weight();
+    }
+    // 400 steps of 10 us: 7.8 mm of fall from rest, and the lowest layer on the plane.
+    const auto a = positions_by_id(inside), b = positions_by_id(outside);
+    double worst = 0.0, lowest = 1.0;
+    for (const auto& [id, x] : a) {
+        worst = std::max(worst, grit::core::norm(x - b.at(id)));
+        lowest = std::min(lowest, x[2]);
+    }
+    EXPECT_LT(lowest, 0.0016);  // the first layer touches the plane (radius 1.5 mm)
+    EXPECT_LT(worst, 1e-12);
 }

@@ -76,7 +76,7 @@ Impact impact(const std::string& law, const GrainMaterial& material, double spee
     Impact out;
     bool touched = false;
     for (int k = 0; k < 100000; ++k) {
-        sys.step(dt);
+        sys.step(dt, k * dt);
         double overlap = 0.0, separation = 0.0;
         overlap_and_separation(overlap, separation);
         out.max_overlap = std::max(out.max_overlap, overlap);

@@ -42,7 +42,7 @@ TEST(MeshWalls, OneContactOnAFlatMeshWherever) {
          {V{{0.13, 0.31, 0.0}}, V{{0.25, 0.25, 0.0}}, V{{0.5, 0.2, 0.0}}, V{{0.5, 0.5, 0.0}}, V{{0.0, 0.0, 0.0}}}) {
         auto s = system_with(plate_facets(1.0, 4), 0.0);
         s.add_grain(at + V{{0.0, 0.0, r - 1e-5}}, r, 0);
-        s.compute_forces(0.0);
+        s.compute_forces(0.0, 0.0);
         EXPECT_EQ(s.meshes()->contact_count(0), 1) << at[0] << " " << at[1];
         const V f = s.grains().force()[0];
         EXPECT_GT(f[2], 0.0);
@@ -59,7 +59,7 @@ TEST(MeshWalls, ConvexEdgeOnceConcaveCornerThrice) {
         auto s = system_with(box_facets(V{{0, 0, 0}}, V{{1, 1, 1}}), 0.0);
         const double d = (r - 1e-5) / std::sqrt(2.0);
         s.add_grain(V{{0.5, 1.0 + d, 1.0 + d}}, r, 0);  // beyond the edge y = z = 1
-        s.compute_forces(0.0);
+        s.compute_forces(0.0, 0.0);
         ASSERT_EQ(s.meshes()->contact_count(0), 1);
         const V f = s.grains().force()[0];
         EXPECT_NEAR(f[1], f[2], 1e-9 * f[2]);  // along the diagonal away from the edge
@@ -69,7 +69,7 @@ TEST(MeshWalls, ConvexEdgeOnceConcaveCornerThrice) {
         auto s = system_with(box_facets(V{{0, 0, 0}}, V{{1, 1, 1}}), 0.0);
         const double d = r - 1e-5;
         s.add_grain(V{{d, d, d}}, r, 0);  // in the corner at the origin, inside
-        s.compute_forces(0.0);
+        s.compute_forces(0.0, 0.0);
         EXPECT_EQ(s.meshes()->contact_count(0), 3);
         const V f = s.grains().force()[0];
         EXPECT_GT(f[0], 0.0);
@@ -93,8 +93,8 @@ TEST(MeshWalls, BouncesAsOnAPlaneWall) {
     double lowest = 1.0;
     const int steps = static_cast<int>(0.3 / dt);
     for (int n = 0; n < steps; ++n) {
-        mesh.step(dt);
-        plane.step(dt);
+        mesh.step(dt, n * dt);
+        plane.step(dt, n * dt);
         lowest = std::min(lowest, plane.grains().position()[0][2]);
         for (int k = 0; k < 3; ++k)
             ASSERT_NEAR(mesh.grains().position()[0][k], plane.grains().position()[0][k], 1e-12) << n;
@@ -113,7 +113,7 @@ TEST(MeshWalls, SlidingAcrossTrianglesIsOneContact) {
     std::set<std::int32_t> triangles;
     const int steps = static_cast<int>(0.04 / dt);
     for (int n = 0; n < steps; ++n) {
-        s.step(dt);
+        s.step(dt, n * dt);
         const auto* walls = s.meshes();
         for (int c = 0; c < walls->contact_count(0); ++c) {
             fresh += walls->contacts_of(0)[c].fresh;
