@@ -39,7 +39,7 @@ test-long: build
 # Unit tests, and the short whole-case tests (conservation, a checkpoint and restart of every case, the
 # grains on a mesh wall and on a copper plate), under AddressSanitizer and UndefinedBehaviorSanitizer.
 test-sanitize: deps
-	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF \
+	cmake -S . -B $(SANITIZE_BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRIT_SANITIZE=ON -DGRIT_BENCH=OFF -DGRIT_PYTHON=OFF \
 	  -DGRIT_UNITY_BUILD=ON
 	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target grit_unit_tests grit_case_tests grit_extension_tests
 	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \

@@ -18,7 +18,6 @@
 #include "grit/core/error.hpp"
 #include "grit/dem/grain_material.hpp"
 #include "grit/io/case_reader.hpp"
-#include "grit/io/particle_budget.hpp"
 #include "grit/io/run_folder.hpp"
 #include "grit/material/library.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -83,16 +82,7 @@ int run_command(const std::string& case_file, const std::vector<std::string>& se
                                                      out, folder.string()));
         options.output_dir = folder;
     }
-    // Particles that cannot fit this machine are refused before any is built (the run's own estimate,
-    // with its neighbour lists, follows once they are: sim/run_estimate.hpp).
-    if (const auto memory = grit::sim::machine_memory(); memory.total > 0.0) {
-        const auto budget = grit::io::estimate_particles(spec);
-        if (budget.bytes > memory.total)
-            throw grit::core::InputError(fmt::format(
-                "key 'numerics.particle_spacing' = {}: the case would make about {:.2g} particles (~{:.3g} GB), "
-                "more than this machine's {:.3g} GB of memory; coarsen the spacing or shrink the domain",
-                spec.particle_spacing, budget.total(), budget.bytes / 1e9, memory.total / 1e9));
-    }
+    grit::sim::refuse_beyond_memory(spec);
     const auto summary = grit::sim::run_case(spec, options);
     if (!summary.message.empty()) {
         fmt::print(stderr, "grit: {}\n", summary.message);

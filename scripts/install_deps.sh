@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libomp-dev
   libhdf5-dev hdf5-tools
   python3 python3-numpy python3-matplotlib python3-vtk9
+  python3-dev pybind11-dev python3-pytest  # the Python module (docs/python.md) and its tests
   liggghts-doc  # the STL chute of LIGGGHTS' chute_wear tutorial (cases/chute_wear_3d); 12 MB, no binaries
 )
 

@@ -24,4 +24,15 @@ sed -i 's/^if __name__ == "__main__":/print("installed copy", file=sys.stderr)\n
 mkdir -p "$P/empty"
 out=$("$P/bin/grit" plot "$P/empty" 2>&1); rc=$?
 check "installed grit plot runs its installed script" '[[ $rc -eq 2 && $out == *"installed copy"* && $out == *"neither series.csv"* ]]'
+# The Python module, where Debian's python3 finds it under the prefix; `python3 -m grit` is the installed CLI.
+site=$(ls -d "$P"/lib/python3.*/dist-packages 2>/dev/null | head -1)
+if [[ -n $site ]]; then
+    check "the Python module imports from the prefix" \
+        '[[ $(cd / && PYTHONPATH=$site /usr/bin/python3 -c "import grit; print(grit.__file__)") == "$site/grit/__init__.py" ]]'
+    check "python3 -m grit runs the installed grit" \
+        '[[ $(cd / && PYTHONPATH=$site /usr/bin/python3 -m grit --version) == "grit "* ]] &&
+         [[ ! -f $site/grit/_build_paths.py ]]'
+    check "the installed module runs a case" \
+        '[[ $(cd / && PYTHONPATH=$site /usr/bin/python3 -c "import grit; print(grit.run(grit.Case.load(\"$P/share/grit/cases/hydrostatic_2d/case.toml\").set(\"time.end\", 0.01))[\"status\"])") == completed ]]'
+fi
 exit $failed

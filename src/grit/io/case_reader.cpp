@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <set>
@@ -243,23 +245,16 @@ void check_fluid_solver(const CaseSpec& c) {
                                      "0 with {} = \"isph\"", c.shepard_interval, c.fluid_solver_key));
 }
 
-}  // namespace
-
-CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
-    toml::table root;
-    try {
-        root = toml::parse_file(file.string());
-    } catch (const toml::parse_error& e) {
-        throw InputError(fmt::format("case file '{}' line {}: malformed TOML: {}", file.string(),
-                                     e.source().begin.line, e.description()));
-    }
+/// The case in `root` (parsed from `file`, whose folder relative paths start from), with `overrides`.
+CaseSpec read_case_table(toml::table root, const std::filesystem::path& file, std::string text,
+                         const std::vector<std::string>& overrides) {
     for (const auto& o : overrides) apply_override(root, o);
 
     KeyRecord keys;
     const Section top(&keys, &root, "");
     CaseSpec c;
     c.source = file;
+    c.text = std::move(text);
     c.overrides = overrides;
     c.name = file.stem().string() == "case" ? file.parent_path().filename().string() : file.stem().string();
     if (c.name.empty()) c.name = "case";
@@ -537,6 +532,32 @@ CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::str
     check_resolution(c);
     check_particle_budget(c);
     return c;
+}
+
+/// The TOML of a case's text; `what` names it in the message of a syntax error ("case file", "case text").
+toml::table parse_case(const std::string& text, const std::filesystem::path& file, const char* what) {
+    try {
+        return toml::parse(text, file.string());
+    } catch (const toml::parse_error& e) {
+        throw InputError(fmt::format("{} '{}' line {}: malformed TOML: {}", what, file.string(), e.source().begin.line,
+                                     e.description()));
+    }
+}
+
+}  // namespace
+
+CaseSpec read_case(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    if (!std::filesystem::exists(file)) throw InputError(fmt::format("case file '{}': no such file", file.string()));
+    std::ifstream in(file, std::ios::binary);
+    std::string text(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>{});
+    if (!in.eof() && in.fail()) throw InputError(fmt::format("case file '{}': cannot be read", file.string()));
+    toml::table root = parse_case(text, file, "case file");
+    return read_case_table(std::move(root), file, std::move(text), overrides);
+}
+
+CaseSpec read_case_text(const std::string& text, const std::filesystem::path& file,
+                        const std::vector<std::string>& overrides) {
+    return read_case_table(parse_case(text, file, "case text"), file, text, overrides);
 }
 
 }  // namespace grit::io

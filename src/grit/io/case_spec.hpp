@@ -206,6 +206,7 @@ struct ModuleSpec {
 
 struct CaseSpec {
     std::filesystem::path source;  ///< the case file
+    std::string text;              ///< its text as read (a checkpoint keeps it; summary.json its digest)
     std::vector<std::string> overrides;  ///< the --set assignments applied to it, in order
     std::string name;              ///< output base name
     std::string title;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -69,15 +70,18 @@ void clear_run_folder(const fs::path& dir) {
         if (e.is_regular_file() && e.path().extension() == ".pvd") fs::remove(e.path());
 }
 
-std::string case_digest(const fs::path& case_file) {
-    std::ifstream in(case_file, std::ios::binary);
+std::string text_digest(const std::string& text) {
     std::uint64_t h = 14695981039346656037ull;
-    char c = 0;
-    while (in.get(c)) {
+    for (const char c : text) {
         h ^= static_cast<unsigned char>(c);
         h *= 1099511628211ull;
     }
     return fmt::format("{:016x}", h);
+}
+
+std::string case_digest(const fs::path& case_file) {
+    std::ifstream in(case_file, std::ios::binary);
+    return text_digest(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
 }
 
 void check_writable_folder(const fs::path& dir, const std::string& option) {

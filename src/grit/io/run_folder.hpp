@@ -19,6 +19,8 @@ void clear_run_folder(const std::filesystem::path& dir);
 /// A digest of a case file's text (64-bit FNV-1a, hex): summary.json keeps it, so that a sweep can tell a
 /// kept run of another case text from one of this.
 std::string case_digest(const std::filesystem::path& case_file);
+/// The same digest of a case's text.
+std::string text_digest(const std::string& text);
 
 /// Checks, before a run, that its files can be written in `dir` (or that `dir` can be created, without
 /// creating it); throws core::InputError naming `option` (--out), the folder and the reason otherwise.

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "grit/core/error.hpp"
 #include "grit/io/particle_budget.hpp"
 #include "grit/parallel/parallel.hpp"
 
@@ -70,6 +71,17 @@ MachineMemory machine_memory() {
         if (key == "MemAvailable:") m.available = kb * 1024.0;
     }
     return m;
+}
+
+void refuse_beyond_memory(const io::CaseSpec& spec) {
+    const auto memory = machine_memory();
+    if (!(memory.total > 0.0)) return;
+    const auto budget = io::estimate_particles(spec);
+    if (budget.bytes > memory.total)
+        throw core::InputError(fmt::format(
+            "key 'numerics.particle_spacing' = {}: the case would make about {:.2g} particles (~{:.3g} GB), "
+            "more than this machine's {:.3g} GB of memory; coarsen the spacing or shrink the domain",
+            spec.particle_spacing, budget.total(), budget.bytes / 1e9, memory.total / 1e9));
 }
 
 template <int Dim>

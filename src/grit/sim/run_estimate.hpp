@@ -39,6 +39,10 @@ struct MachineMemory {
 };
 MachineMemory machine_memory();
 
+/// Refuses (core::InputError naming numerics.particle_spacing) a case whose particles alone would not fit
+/// this machine's memory, before any is built; the run's own estimate follows once they are.
+void refuse_beyond_memory(const io::CaseSpec& spec);
+
 /// The estimate from the primed `state` of a run of `spec` (its clock holds the first stable step).
 template <int Dim>
 RunEstimate estimate_run(const io::CaseSpec& spec, const State<Dim>& state);

@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include "grit/core/error.hpp"
@@ -23,13 +21,6 @@ namespace {
 // pair of the cut lists (dem::ContactHistory). 3: grains carry `collisions` and `grain_contact`, the grains
 // module the collisions of the grains that left.
 constexpr std::int64_t checkpoint_format_version = 4;  // 4: 64-bit ids by origin, the inlets' layer counts
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 constexpr const char* periodic_state_key = "domain.periodic";
 constexpr const char* symmetry_state_key = "domain.symmetry";
@@ -129,7 +120,7 @@ void Simulation<Dim>::write_checkpoint_file(const std::filesystem::path& file) c
         h5.write("git_revision", std::string(git_revision()));
         h5.write("case_name", spec_.name);
         h5.write("case_file", spec_.source.string());
-        h5.write("case_text", read_text(spec_.source));
+        h5.write("case_text", spec_.text);
         // The --set overrides: a restart applies them again before its own (checkpoint_overrides).
         h5.write("override_count", static_cast<std::int64_t>(spec_.overrides.size()));
         for (std::size_t k = 0; k < spec_.overrides.size(); ++k)

@@ -64,7 +64,7 @@ void Simulation<Dim>::write_summary(const RunSummary& s, const std::string& mess
     j["git_revision"] = git_revision();
     j["dimension"] = Dim;
     j["case_file"] = spec_.source.string();
-    j["case_digest"] = io::case_digest(spec_.source);
+    j["case_digest"] = io::text_digest(spec_.text);
     j["overrides"] = spec_.overrides;
     j["particle_spacing"] = spec_.particle_spacing;
     for (const auto& m : modules_) m->describe(j);
