@@ -20,8 +20,9 @@ from typing import Any, Dict, Iterable, Optional, Union
 from . import _grit
 from .case_values import override
 from .run_folder import Run
+from .sweep import sweep
 
-__all__ = ["Case", "CaseError", "BlowUp", "Interrupted", "Simulation", "Run", "run", "version"]
+__all__ = ["Case", "CaseError", "BlowUp", "Interrupted", "Simulation", "Run", "run", "sweep", "version"]
 
 CaseError = _grit.CaseError
 """A case refused (a ValueError): the message names the key, the value and the reason."""

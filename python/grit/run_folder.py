@@ -11,8 +11,8 @@ from ._vtu import read_vtu
 
 
 def _read_table(path: pathlib.Path) -> Dict[str, np.ndarray]:
-    """A CSV grit wrote (a header row, then rows) as one array per column: numbers as float64, a column
-    with text in it as strings."""
+    """A CSV grit wrote (a header row, then rows) as one array per column: numbers as float64 (an empty
+    cell, a value a run does not have, as NaN), a column with text in it as strings."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     if not rows:
@@ -25,7 +25,7 @@ def _read_table(path: pathlib.Path) -> Dict[str, np.ndarray]:
     for k, name in enumerate(head):
         column = [row[k] for row in body]
         try:
-            out[name] = np.array([float(v) for v in column], dtype=np.float64)
+            out[name] = np.array([float(v) if v != "" else np.nan for v in column], dtype=np.float64)
         except ValueError:
             out[name] = np.array(column, dtype=str)
     return out

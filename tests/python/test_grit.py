@@ -164,6 +164,24 @@ def test_a_checkpoint_continues_bit_for_bit(tmp_path):
         grit.Simulation(grit.Case.load(TANK), checkpoint=tmp_path / "mid.h5")
 
 
+def test_a_sweep_of_two_points_runs_each_as_the_cli(tmp_path):
+    case = grit.Case.load(TANK).set("output.snapshots", False)
+    table = grit.sweep(case, {"time.end": [0.01, 0.02]}, out=tmp_path, jobs=2, threads=2)
+    assert list(np.asarray(table["time.end"])) == [0.01, 0.02]
+    assert list(np.asarray(table["status"])) == ["completed", "completed"]
+    for end, folder in zip([0.01, 0.02], np.asarray(table["folder"])):
+        kept = json.loads((tmp_path / folder / "summary.json").read_text())
+        alone = grit.run(grit.Case.load(TANK).set("output.snapshots", False).set("time.end", end))
+        assert kept["steps"] == alone["steps"] and kept["kinetic_energy"] == alone["values"]["kinetic_energy"]
+    assert np.isnan(np.asarray(table["crater_depth"], dtype=float)).all()  # no crater: empty cells
+    # Without out: a temporary folder, gone afterwards; a bad key is the CLI's refusal.
+    assert len(grit.sweep(case, {"time.end": [0.01]})["status"]) == 1
+    with pytest.raises(grit.CaseError, match="time.ned"):
+        grit.sweep(case, {"time.ned": [0.01]})
+    with pytest.raises(TypeError, match="has a comma"):
+        grit.sweep(case, {"physics.gravity": [[0.0, -9.81]]})
+
+
 def test_threads_must_be_positive_and_last_for_the_run():
     with pytest.raises(grit.CaseError, match="threads=0: must be a positive whole number"):
         grit.run(grit.Case.load(TANK), threads=0)
