@@ -160,6 +160,22 @@ PYBIND11_MODULE(_grit, m) {
         py::arg("file"), py::arg("text"), py::arg("overrides"), py::arg("out"), py::arg("quiet"),
         py::arg("overwrite"));
 
+    m.def(
+        "restart",
+        [](const std::string& folder, const py::object& file, const py::object& text,
+           const std::vector<std::string>& overrides, double end_time, bool quiet) {
+            python::CaseSource source;
+            if (!file.is_none()) source = source_of(file.cast<std::string>(), text, overrides);
+            sim::RunSummary summary;
+            {
+                py::gil_scoped_release release;
+                summary = python::restart_run(folder, file.is_none() ? nullptr : &source, end_time, quiet);
+            }
+            return summary_of(summary);
+        },
+        py::arg("folder"), py::arg("file"), py::arg("text"), py::arg("overrides"), py::arg("end_time"),
+        py::arg("quiet"));
+
     py::class_<python::SimulationHandle>(m, "SimulationHandle")
         .def(py::init([](const std::string& file, const py::object& text, const std::vector<std::string>& overrides,
                          const std::string& checkpoint) {

@@ -9,6 +9,7 @@
 #include "grit/core/error.hpp"
 #include "grit/core/types.hpp"
 #include "grit/io/case_reader.hpp"
+#include "grit/io/hdf5_file.hpp"
 #include "grit/io/run_folder.hpp"
 #include "grit/sim/output_times.hpp"
 #include "grit/sim/run_estimate.hpp"
@@ -153,6 +154,37 @@ sim::RunSummary run_case(const io::CaseSpec& spec, const std::filesystem::path& 
                                                out.string(), earlier));
         io::check_writable_folder(out, "out");
     }
+    sim::refuse_beyond_memory(spec);
+    return sim::run_case(spec, options);
+}
+
+sim::RunSummary restart_run(const std::filesystem::path& folder, const CaseSource* source, double end_time, bool quiet) {
+    const auto checkpoint = sim::resolve_checkpoint(folder);
+    CaseSource from;
+    if (source) {
+        from = *source;
+        // The checkpointed run's overrides first, as the CLI's restart applies them, then the case's own.
+        from.overrides = sim::checkpoint_overrides(checkpoint, read_case(*source).name);
+        from.overrides.insert(from.overrides.end(), source->overrides.begin(), source->overrides.end());
+    } else {
+        const auto h5 = io::Hdf5File::open(checkpoint);
+        if (!h5.has_attribute("case_text"))
+            throw core::InputError(fmt::format("checkpoint {}: it holds no case text; give the case", checkpoint.string()));
+        from.file = h5.read_string("case_file");
+        from.text = h5.read_string("case_text");
+        from.from_text = true;
+        const std::int64_t n = h5.has_attribute("override_count") ? h5.read_int("override_count") : 0;
+        for (std::int64_t k = 0; k < n; ++k) from.overrides.push_back(h5.read_string(fmt::format("override {}", k)));
+    }
+    if (end_time > 0.0) from.overrides.push_back(fmt::format("time.end={:.17g}", end_time));
+    const io::CaseSpec spec = read_case(from);
+    sim::RunOptions options;
+    options.quiet = quiet;
+    options.adapt_threads = true;
+    options.restart = checkpoint;
+    // The checkpoint's run folder: the one that holds checkpoints/.
+    const auto parent = checkpoint.parent_path();
+    options.output_dir = parent.filename() == "checkpoints" ? parent.parent_path() : parent;
     sim::refuse_beyond_memory(spec);
     return sim::run_case(spec, options);
 }

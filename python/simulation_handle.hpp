@@ -70,4 +70,9 @@ private:
 sim::RunSummary run_case(const io::CaseSpec& spec, const std::filesystem::path& out, bool write_files, bool quiet,
                          bool overwrite);
 
+/// Continues the run in `folder` from its latest checkpoint, into its own files, as `grit run CASE --restart
+/// folder` does. The case is `source` when given (its overrides after the checkpointed run's), else the one the
+/// checkpoint holds (its file name, text and overrides). `end_time` > 0 extends or shortens it (time.end).
+sim::RunSummary restart_run(const std::filesystem::path& folder, const CaseSource* source, double end_time, bool quiet);
+
 }  // namespace grit::python

@@ -98,6 +98,20 @@ def test_dam_break_files_equal_the_cli_bit_for_bit(tmp_path):
     assert run.crater() is None and run.impacts is None
 
 
+def test_a_run_extended_from_its_checkpoint_equals_one_that_never_stopped(tmp_path):
+    straight = grit.run(coarse_dam(), out=tmp_path / "straight")
+    extended = grit.run(coarse_dam().set("time.end", 0.01), out=tmp_path / "extended")
+    assert extended.checkpoints, "a finished run leaves its checkpoint"
+    assert extended.restart(end_time=0.02) is extended  # the case the checkpoint holds
+    for name in ["series.csv", "snapshots/dambreak_2d_000004.vtu"]:
+        assert (tmp_path / "straight" / name).read_bytes() == (tmp_path / "extended" / name).read_bytes(), name
+    assert extended.summary["segments"] == 2 and straight.summary["steps"] == extended.summary["steps"]
+    # Given the case again, as the command line's restart takes it: already at its end, nothing runs.
+    before = (tmp_path / "extended" / "series.csv").read_bytes()
+    extended.restart(case=coarse_dam())
+    assert (tmp_path / "extended" / "series.csv").read_bytes() == before
+
+
 def test_an_earlier_run_is_not_replaced_unless_asked(tmp_path):
     case = grit.Case.load(TANK).set("time.end", 0.05)
     grit.run(case, out=tmp_path)
