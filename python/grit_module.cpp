@@ -6,7 +6,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <chrono>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -146,19 +148,25 @@ PYBIND11_MODULE(_grit, m) {
     m.def(
         "run",
         [](const std::string& file, const py::object& text, const std::vector<std::string>& overrides,
-           const py::object& out, bool quiet, bool overwrite) {
+           const py::object& out, bool quiet, bool overwrite, const py::object& progress) {
             const auto spec = python::read_case(source_of(file, text, overrides));
             const bool write = !out.is_none();
             const std::filesystem::path folder = write ? out.cast<std::filesystem::path>() : std::filesystem::path();
+            std::function<void(double, long)> on_output;
+            if (!progress.is_none())
+                on_output = [progress](double time, long step) {
+                    py::gil_scoped_acquire gil;  // the run released it
+                    progress(time, step);
+                };
             sim::RunSummary summary;
             {
                 py::gil_scoped_release release;  // a notebook stays responsive while the C++ runs
-                summary = python::run_case(spec, folder, write, quiet, overwrite);
+                summary = python::run_case(spec, folder, write, quiet, overwrite, std::move(on_output));
             }
             return summary_of(summary);
         },
         py::arg("file"), py::arg("text"), py::arg("overrides"), py::arg("out"), py::arg("quiet"),
-        py::arg("overwrite"));
+        py::arg("overwrite"), py::arg("progress"));
 
     m.def(
         "restart",
@@ -187,7 +195,23 @@ PYBIND11_MODULE(_grit, m) {
         .def_property_readonly("time", &python::SimulationHandle::time)
         .def_property_readonly("step", &python::SimulationHandle::step)
         .def_property_readonly("dt", &python::SimulationHandle::time_step)
-        .def("advance", &python::SimulationHandle::advance, py::arg("time"), py::call_guard<py::gil_scoped_release>())
+        .def(
+            "advance",
+            [](python::SimulationHandle& s, double time) {
+                // Ctrl-C: Python's handler only flags the signal; look at the flag every 0.2 s of wall time
+                // (with the GIL: a few microseconds), and stop after the step with KeyboardInterrupt.
+                auto last = std::chrono::steady_clock::now();
+                auto poll = [&last] {
+                    const auto now = std::chrono::steady_clock::now();
+                    if (now - last < std::chrono::milliseconds(200)) return;
+                    last = now;
+                    py::gil_scoped_acquire gil;
+                    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                };
+                py::gil_scoped_release release;
+                s.advance(time, poll);
+            },
+            py::arg("time"))
         .def("fields", [](const python::SimulationHandle& s, const std::string& phase) { return arrays_of(s.fields(phase)); })
         .def("outputs", [](const python::SimulationHandle& s) { return values_of(s.outputs()); })
         .def("checkpoint", &python::SimulationHandle::checkpoint, py::arg("file"));

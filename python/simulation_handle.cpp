@@ -111,14 +111,14 @@ const io::CaseSpec& SimulationHandle::spec() const {
     return std::visit([](const auto& s) -> const io::CaseSpec& { return s->spec(); }, simulation_);
 }
 
-void SimulationHandle::advance(double time) {
+void SimulationHandle::advance(double time, const std::function<void()>& after_each_step) {
     std::visit(
         [&](auto& s) {
             // As Simulation::run steps: toward the next output time or the end, whichever comes first.
             const sim::Cadence outputs{s->spec().output_interval};
             while (s->time() < time * (1.0 - sim::same_time_tolerance)) {
                 const double target = std::min(time, outputs.at(outputs.next_after(s->time())));
-                s->advance_to(target);
+                s->advance_to(target, after_each_step);
             }
         },
         simulation_);
@@ -141,8 +141,9 @@ std::string SimulationHandle::estimate() {
 }
 
 sim::RunSummary run_case(const io::CaseSpec& spec, const std::filesystem::path& out, bool write_files, bool quiet,
-                         bool overwrite) {
+                         bool overwrite, std::function<void(double, long)> on_output) {
     sim::RunOptions options;
+    options.on_output = std::move(on_output);
     options.write_files = write_files;
     options.quiet = quiet;
     options.adapt_threads = true;  // as the CLI's runs: fewer threads while another process holds a core

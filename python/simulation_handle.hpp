@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -50,7 +51,8 @@ public:
 
     /// Advances to `time` [s], landing on every output time on the way as a run does (output k at
     /// k x output.interval), so advancing in pieces that end on output times gives a run's states bit for bit.
-    void advance(double time);
+    /// `after_each_step` runs after every step (the bindings poll Ctrl-C there).
+    void advance(double time, const std::function<void()>& after_each_step = {});
     /// The particles of `phase`: "fluid", "solid", "wall" (SPH) or "grains" (symmetry images left out).
     /// Throws std::invalid_argument for another name.
     PhaseArrays fields(const std::string& phase) const;
@@ -67,8 +69,9 @@ private:
 };
 
 /// What the Python module's run() did: the run's summary, or a note (a run already at its end time).
+/// `on_output`: called after each output with the time and step (may be empty).
 sim::RunSummary run_case(const io::CaseSpec& spec, const std::filesystem::path& out, bool write_files, bool quiet,
-                         bool overwrite);
+                         bool overwrite, std::function<void(double, long)> on_output = {});
 
 /// Continues the run in `folder` from its latest checkpoint, into its own files, as `grit run CASE --restart
 /// folder` does. The case is `source` when given (its overrides after the checkpointed run's), else the one the

@@ -15,7 +15,8 @@ for bit. Case keys, their validation and their messages are those of ``grit run 
 """
 import os
 import pathlib
-from typing import Any, Dict, Iterable, Optional, Union
+import sys
+from typing import Any, Callable, Dict, Iterable, Optional, Union
 
 from . import _grit
 from .case_values import override
@@ -111,6 +112,21 @@ def _case_of(case: Union[Case, str, os.PathLike]) -> Case:
     return case if isinstance(case, Case) else Case.load(case)
 
 
+def _one_process() -> None:
+    """Refuses to run under an MPI launcher with more than one process: each would run the whole case."""
+    for variable in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"):
+        size = os.environ.get(variable, "1")
+        if size.isdigit() and int(size) > 1:
+            raise RuntimeError(f"grit's Python module runs a case in one process, and this is one of {size} an MPI "
+                               f"launcher started ({variable} = {size}): each would run the whole case. Run the "
+                               f"script without mpirun, or with -np 1")
+
+
+def _quiet(quiet: Optional[bool]) -> bool:
+    """The progress line: shown on a terminal unless quiet=True, as the command line shows it."""
+    return (not sys.stderr.isatty()) if quiet is None else bool(quiet)
+
+
 def _check_threads(threads: Optional[int]) -> Optional[int]:
     if threads is not None and (not isinstance(threads, int) or isinstance(threads, bool) or threads < 1):
         raise CaseError(f"threads={threads!r}: must be a positive whole number")
@@ -144,6 +160,7 @@ class Simulation:
     def __init__(self, case: Union[Case, str, os.PathLike], threads: Optional[int] = None,
                  checkpoint: Optional[Union[str, os.PathLike]] = None):
         """``threads``: the OpenMP threads while it builds and advances (default: as the command line)."""
+        _one_process()
         self.case = _case_of(case)
         self.threads = _check_threads(threads)
         with _Threads(self.threads):
@@ -166,7 +183,8 @@ class Simulation:
 
     def advance(self, time: float) -> "Simulation":
         """Runs to ``time`` [s] (absolute, not an increment). Steps land on every output time on the way, as
-        ``grit run`` does, so advancing to output times in pieces gives a run's states bit for bit."""
+        ``grit run`` does, so advancing to output times in pieces gives a run's states bit for bit. Ctrl-C stops
+        it after the step it is in (within 0.2 s) with KeyboardInterrupt; the state is then that step's."""
         with _Threads(self.threads):
             self._handle.advance(float(time))
         return self
@@ -189,15 +207,19 @@ class Simulation:
 
 
 def run(case: Union[Case, str, os.PathLike], out: Optional[Union[str, os.PathLike]] = None,
-        threads: Optional[int] = None, quiet: bool = True, overwrite: bool = False) -> Union[Run, Dict[str, Any]]:
+        threads: Optional[int] = None, quiet: Optional[bool] = None, overwrite: bool = False,
+        progress: Optional[Callable[[float, int], Any]] = None) -> Union[Run, Dict[str, Any]]:
     """Runs ``case`` to its time.end, as ``grit run CASE --out OUT`` does.
 
     With ``out``, the run writes the files ``grit run`` writes there and returns them as a grit.Run; a folder
     that holds an earlier run is refused unless ``overwrite=True``. Without ``out`` nothing is written and
     the run's summary (status, steps, final output values) is returned as a dict. ``threads``: the OpenMP
     threads for this run (default: as the command line: OMP_NUM_THREADS, else the cores this process may
-    use). ``quiet=False`` shows the progress line."""
+    use). The command line's progress line is shown when standard error is a terminal (``quiet`` True or
+    False decides instead); ``progress(time, step)``, if given, is called after every output. An exception
+    it raises ends the run there. Ctrl-C stops the run with a checkpoint, then raises KeyboardInterrupt."""
+    _one_process()
     case = _case_of(case)
     with _Threads(_check_threads(threads)):
-        summary = _grit.run(*case._source(), None if out is None else str(out), quiet, overwrite)
+        summary = _grit.run(*case._source(), None if out is None else str(out), _quiet(quiet), overwrite, progress)
     return summary if out is None else Run(out)

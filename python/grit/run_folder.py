@@ -112,21 +112,22 @@ class Run:
         return sorted((self.folder / "checkpoints").glob("*.h5"))
 
     def restart(self, end_time: Optional[float] = None, case=None, threads: Optional[int] = None,
-                quiet: bool = True) -> "Run":
+                quiet: Optional[bool] = None) -> "Run":
         """Continues the run from its latest checkpoint into its own files, as ``grit run CASE --restart DIR``
         does, bit for bit with a run that never stopped. ``end_time`` [s] extends it (time.end); ``case`` (a
         grit.Case or a path) is read again with its overrides after the checkpointed run's, as the command
         line's restart reads it; without it, the case the checkpoint holds (its text and overrides) is used.
         A run already at its end time runs nothing (``summary["status"]`` stays)."""
-        from . import Case, _check_threads, _grit, _Threads
+        from . import Case, _check_threads, _grit, _one_process, _quiet, _Threads
 
+        _one_process()
         if end_time is not None and not end_time > 0.0:
             raise _grit.CaseError(f"end_time={end_time!r}: must be a time after the start [s]")
         if case is not None and not isinstance(case, Case):
             case = Case.load(case)
         source = (None, None, []) if case is None else case._source()
         with _Threads(_check_threads(threads)):
-            _grit.restart(str(self.folder), *source, end_time or 0.0, quiet)
+            _grit.restart(str(self.folder), *source, end_time or 0.0, _quiet(quiet))
         return self
 
     def _pvd(self, phase: str) -> pathlib.Path:

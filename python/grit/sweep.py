@@ -32,8 +32,9 @@ def sweep(case, parameters: Dict[str, Iterable[Any]], out: Optional[Union[str, o
     folder) as a pandas DataFrame when pandas is installed, else a dict of numpy arrays. With ``out`` the
     runs' folders and sweep.csv stay there (finished runs of the same case and overrides are kept, not
     run again); without it they go to a temporary folder that is removed."""
-    from . import Case  # the package's, after it is imported
+    from . import Case, _one_process  # the package's, after it is imported
 
+    _one_process()
     case = case if isinstance(case, Case) else Case.load(case)
     if case._text is not None:
         raise _grit.CaseError("grit.sweep runs the grit command on a case file: save the text to a file and "

@@ -120,6 +120,46 @@ def test_an_earlier_run_is_not_replaced_unless_asked(tmp_path):
     grit.run(case, out=tmp_path, overwrite=True)
 
 
+def test_progress_is_called_after_every_output_and_can_stop_the_run(tmp_path):
+    seen = []
+    grit.run(coarse_dam(), progress=lambda t, step: seen.append((t, step)))
+    assert [t for t, _ in seen] == pytest.approx([0.0, 0.005, 0.01, 0.015, 0.02])
+    assert seen[0][1] == 0 and all(a[1] < b[1] for a, b in zip(seen, seen[1:]))
+
+    def stop_at_10ms(t, step):
+        if t >= 0.01:
+            raise ValueError("enough")
+
+    with pytest.raises(ValueError, match="enough"):
+        grit.run(coarse_dam(), out=tmp_path, progress=stop_at_10ms)
+    assert len((tmp_path / "series.csv").read_text().splitlines()) == 1 + 3  # header, 0, 5 ms, 10 ms
+
+
+def test_ctrl_c_stops_an_advance_after_its_step():
+    script = (f"import grit, time\nsim = grit.Simulation(grit.Case.load({str(DAM)!r}), threads=1)\n"
+              "print('ready', flush=True)\n"
+              "try:\n    sim.advance(5.0)\nexcept KeyboardInterrupt:\n"
+              "    print('stopped at step', sim.step, 't =', sim.time, flush=True)\n")
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, env=dict(os.environ))
+    assert child.stdout.readline().strip() == "ready"
+    time.sleep(2.0)
+    start = time.time()
+    child.send_signal(signal.SIGINT)
+    out, err = child.communicate(timeout=120)
+    assert child.returncode == 0, err
+    assert out.startswith("stopped at step ") and int(out.split()[3]) > 0
+    assert time.time() - start < 10.0
+
+
+def test_a_run_under_an_mpi_launcher_with_more_than_one_process_is_refused():
+    script = (f"import grit\ntry:\n    grit.run(grit.Case.load({str(TANK)!r}))\n"
+              "except RuntimeError as e:\n    print(e)\n")
+    r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                       env=dict(os.environ, OMPI_COMM_WORLD_SIZE="2"))
+    assert r.returncode == 0 and "runs a case in one process" in r.stdout and "OMPI_COMM_WORLD_SIZE = 2" in r.stdout
+
+
 def test_run_without_out_writes_nothing(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     summary = grit.run(grit.Case.load(TANK).set("time.end", 0.05))

@@ -181,7 +181,10 @@ RunSummary Simulation<Dim>::run() {
     try {
         if (!restart) prime();
         check_plan(log.get());
-        if (!restart) write_output();
+        if (!restart) {
+            write_output();
+            if (options_.on_output) options_.on_output(c.time, c.step);
+        }
         const Cadence checkpoints{spec_.checkpoint_interval};
         const bool timed_checkpoints = spec_.checkpoint_interval > 0.0;
         long next_output = outputs.next_after(c.time);
@@ -203,6 +206,7 @@ RunSummary Simulation<Dim>::run() {
             if (c.time >= target * (1.0 - same_time_tolerance)) {
                 write_output();
                 next_output = std::max(next_output + 1, outputs.next_after(c.time));
+                if (options_.on_output) options_.on_output(c.time, c.step);
             }
             if (timed_checkpoints && c.time >= checkpoints.at(next_checkpoint) * (1.0 - same_time_tolerance)) {
                 write_checkpoint();

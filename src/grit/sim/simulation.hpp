@@ -46,6 +46,9 @@ struct RunOptions {
     double progress_every_s = 30.0;
     /// Stop with a checkpoint after this much wall time [s] (--max-wall-time; 0: no limit).
     double max_wall_time_s = 0.0;
+    /// Called after each output is written, with the time and step (the Python module's progress callback).
+    /// What it throws ends the run there, without a checkpoint.
+    std::function<void(double time, long step)> on_output;
 };
 
 /// What a finished run reports (also written to summary.json).
