@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -152,16 +153,20 @@ PYBIND11_MODULE(_grit, m) {
             const auto spec = python::read_case(source_of(file, text, overrides));
             const bool write = !out.is_none();
             const std::filesystem::path folder = write ? out.cast<std::filesystem::path>() : std::filesystem::path();
+            // The callback is copied where the GIL is released (into the run's options): the copies share one
+            // reference to it, which this function, holding the GIL, outlives.
             std::function<void(double, long)> on_output;
-            if (!progress.is_none())
-                on_output = [progress](double time, long step) {
+            if (!progress.is_none()) {
+                auto callback = std::make_shared<py::object>(progress);
+                on_output = [callback](double time, long step) {
                     py::gil_scoped_acquire gil;  // the run released it
-                    progress(time, step);
+                    (*callback)(time, step);
                 };
+            }
             sim::RunSummary summary;
             {
                 py::gil_scoped_release release;  // a notebook stays responsive while the C++ runs
-                summary = python::run_case(spec, folder, write, quiet, overwrite, std::move(on_output));
+                summary = python::run_case(spec, folder, write, quiet, overwrite, on_output);
             }
             return summary_of(summary);
         },
