@@ -117,9 +117,9 @@ def _one_process() -> None:
     for variable in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"):
         size = os.environ.get(variable, "1")
         if size.isdigit() and int(size) > 1:
-            raise RuntimeError(f"grit's Python module runs a case in one process, and this is one of {size} an MPI "
-                               f"launcher started ({variable} = {size}): each would run the whole case. Run the "
-                               f"script without mpirun, or with -np 1")
+            raise RuntimeError(f"grit's Python module runs a case in one process, and this process is one of {size} "
+                               f"that an MPI launcher started ({variable} = {size}): each would run the whole case. "
+                               f"Run the script without mpirun, or with -np 1")
 
 
 def _quiet(quiet: Optional[bool]) -> bool:
