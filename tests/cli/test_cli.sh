@@ -465,7 +465,7 @@ else
 fi
 
 # Periodic axes: domain.periodic and its older spelling dem.periodic must agree; a periodic axis must be
-# three neighbour-list radii long; periodic solids are refused.
+# longer than twice the kernel support, and than twice the crack analysis' link distance.
 POIS=$ROOT/cases/poiseuille_periodic_2d/case.toml
 grit check "$POIS"
 if [[ $RC -eq 0 ]]; then
@@ -475,12 +475,12 @@ else
 fi
 expect_input_error "domain.periodic and dem.periodic differ" "'domain.periodic' = [\"x\"]" \
     "'dem.periodic' = [\"y\"]" "differ" -- run "$BOUNCE" --set 'domain.periodic=["x"]' --set 'dem.periodic=["y"]'
-expect_input_error "periodic axis shorter than three list radii" "key 'domain.periodic'" \
-    "three neighbour-list radii" -- run "$POIS" --set 'domain.max=[2.0e-4, 1.1e-3]' \
-    --set 'fluid[0].max=[2.0e-4, 9.875e-4]' --set 'wall[0].max=[2.0e-4, 1.25e-5]' \
-    --set 'wall[1].max=[2.0e-4, 1.0625e-3]'
-expect_input_error "periodic solids" "domain.periodic" "solid[0]" "not support solids" -- \
-    run "$ROOT/cases/elastic_impact_2d/case.toml" --set 'domain.periodic=["x"]'
+expect_input_error "periodic axis not longer than two kernel supports" "key 'domain.periodic'" \
+    "twice the kernel support" -- run "$POIS" --set 'domain.max=[1.0e-4, 1.1e-3]' \
+    --set 'fluid[0].max=[1.0e-4, 9.875e-4]' --set 'wall[0].max=[1.0e-4, 1.25e-5]' \
+    --set 'wall[1].max=[1.0e-4, 1.0625e-3]'
+expect_input_error "crack link of half the period" "key 'cracks.link_distance' = 0.011" "two images" -- \
+    run "$ROOT/cases/elastic_bar_periodic_2d/case.toml" --set 'cracks.link_distance=0.011'
 
 # --- determinism: 1 and 2 threads give the same bytes ------------------------------------------------
 

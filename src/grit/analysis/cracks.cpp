@@ -10,6 +10,7 @@
 
 #include "grit/core/disjoint_sets.hpp"
 #include "grit/core/error.hpp"
+#include "grit/domain/halo.hpp"
 #include "grit/neighbors/cell_grid.hpp"
 
 namespace grit::analysis {
@@ -42,10 +43,16 @@ double cell_size_for(const core::Vec<Dim>* x, Index n, double link) {
 template <int Dim>
 std::vector<domain::ParticleId> crack_labels(const particles::SphParticles<Dim>& ps, const double* damage,
                                              const CrackOptions& options, Index owned,
-                                             const domain::ParticleId* ghost_labels) {
+                                             const domain::ParticleId* ghost_labels,
+                                             const neighbors::PeriodicBox<Dim>& box) {
     if (!(options.link_distance > 0.0))
         throw core::InputError("crack analysis: link_distance = " + std::to_string(options.link_distance) +
                                " must be > 0");
+    for (int k = 0; k < Dim; ++k)
+        if (box.periodic[k] && !(2.0 * options.link_distance < box.length(k)))
+            throw core::InputError("crack analysis: link_distance = " + std::to_string(options.link_distance) +
+                                   " m must be less than half the period along each periodic axis (" +
+                                   std::to_string(box.length(k)) + " m): a particle would link to two images of one");
     const auto* x = ps.position();
     const auto* phase = ps.phase();
     const auto* id = ps.id();
@@ -62,12 +69,24 @@ std::vector<domain::ParticleId> crack_labels(const particles::SphParticles<Dim>&
     }
     const auto n = static_cast<Index>(damaged.size());
     if (n == 0) return labels;
+    // Along periodic axes, the images of the damaged particles within link_distance of a face stand past
+    // the other face (points [n, points)), each linking for the particle it images.
+    std::vector<Index> imaged(static_cast<std::size_t>(n));
+    for (Index a = 0; a < n; ++a) imaged[static_cast<std::size_t>(a)] = a;
+    if (box.any())
+        for (const auto& [a, t] : domain::periodic_ghosts(xd.data(), n, box, options.link_distance)) {
+            const auto image = t.position(xd[static_cast<std::size_t>(a)]);
+            xd.push_back(image);
+            imaged.push_back(a);
+        }
+    const auto points = static_cast<Index>(xd.size());
 
     // Links: each damaged particle against the 3^Dim cells around it (cells are >= link_distance).
     const double link2 = options.link_distance * options.link_distance;
-    const auto grid = neighbors::CellGrid<Dim>::covering(xd.data(), n, cell_size_for(xd.data(), n, options.link_distance));
+    const auto grid =
+        neighbors::CellGrid<Dim>::covering(xd.data(), points, cell_size_for(xd.data(), points, options.link_distance));
     std::vector<Index> order, cell_start;
-    neighbors::sort_by_cell(grid, xd.data(), n, order, cell_start);
+    neighbors::sort_by_cell(grid, xd.data(), points, order, cell_start);
     core::DisjointSets sets(n);
     for (Index a = 0; a < n; ++a) {
         const auto c = grid.coords(xd[static_cast<std::size_t>(a)]);
@@ -82,7 +101,7 @@ std::vector<domain::ParticleId> crack_labels(const particles::SphParticles<Dim>&
             for (Index s = cell_start[at]; s < cell_start[at + 1]; ++s) {
                 const Index b = order[static_cast<std::size_t>(s)];
                 if (b > a && core::norm2(xd[static_cast<std::size_t>(a)] - xd[static_cast<std::size_t>(b)]) <= link2)
-                    sets.unite(a, b);
+                    sets.unite(a, imaged[static_cast<std::size_t>(b)]);
             }
             // Next cell of the block, x fastest.
             int k = 0;
@@ -123,13 +142,14 @@ void count_cracks(const std::map<domain::ParticleId, Index>& sizes, const CrackO
 }
 
 template <int Dim>
-CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const double* damage, const CrackOptions& options) {
+CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const double* damage, const CrackOptions& options,
+                             const neighbors::PeriodicBox<Dim>& box) {
     CrackMeasures out;
     const auto* phase = ps.phase();
     const auto* m = ps.mass();
     const auto* rho = ps.density();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
-    const auto labels = crack_labels(ps, damage, options, ps.size());
+    const auto labels = crack_labels(ps, damage, options, ps.size(), nullptr, box);
     // The area is summed serially in index order (deterministic).
     for (Index i = 0; i < ps.size(); ++i) {
         if (phase[i] != solid || !(damage[i] >= options.damage_threshold) || ps.is_image(i)) continue;
@@ -141,10 +161,14 @@ CrackMeasures analyse_cracks(const particles::SphParticles<Dim>& ps, const doubl
 }
 
 template std::vector<domain::ParticleId> crack_labels<2>(const particles::SphParticles<2>&, const double*,
-                                                         const CrackOptions&, Index, const domain::ParticleId*);
+                                                         const CrackOptions&, Index, const domain::ParticleId*,
+                                                         const neighbors::PeriodicBox<2>&);
 template std::vector<domain::ParticleId> crack_labels<3>(const particles::SphParticles<3>&, const double*,
-                                                         const CrackOptions&, Index, const domain::ParticleId*);
-template CrackMeasures analyse_cracks<2>(const particles::SphParticles<2>&, const double*, const CrackOptions&);
-template CrackMeasures analyse_cracks<3>(const particles::SphParticles<3>&, const double*, const CrackOptions&);
+                                                         const CrackOptions&, Index, const domain::ParticleId*,
+                                                         const neighbors::PeriodicBox<3>&);
+template CrackMeasures analyse_cracks<2>(const particles::SphParticles<2>&, const double*, const CrackOptions&,
+                                         const neighbors::PeriodicBox<2>&);
+template CrackMeasures analyse_cracks<3>(const particles::SphParticles<3>&, const double*, const CrackOptions&,
+                                         const neighbors::PeriodicBox<3>&);
 
 }  // namespace grit::analysis

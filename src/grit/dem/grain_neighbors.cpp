@@ -14,10 +14,12 @@ template <int Dim>
 typename GrainNeighborList<Dim>::Grid GrainNeighborList<Dim>::make_grid(const GrainDomain<Dim>& domain, const Vec* x,
                                                                         Index n, double cell_size) {
     for (int k = 0; k < Dim; ++k)
-        if (domain.periodic[k] && std::floor(domain.length(k) / cell_size) < 3.0)
+        if (domain.periodic[k] && !(domain.length(k) > 2.0 * cell_size))
             throw core::InputError("grain domain: periodic axis " + std::to_string(k) + " is " +
-                                   std::to_string(domain.length(k)) + " m long, less than three neighbour cells of " +
-                                   std::to_string(cell_size) + " m (largest grain diameter + skin)");
+                                   std::to_string(domain.length(k)) + " m long, not more than twice " +
+                                   std::to_string(cell_size) +
+                                   " m (the largest grain diameter + skin): a grain would reach two periodic images "
+                                   "of one grain");
     return Grid::over_box(domain.periodic, domain.lower, domain.upper, x, n, cell_size);
 }
 

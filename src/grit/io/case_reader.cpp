@@ -50,10 +50,9 @@ std::string axes_text(const std::vector<bool>& axes) {
 }
 
 /// domain.periodic, or dem.periodic (its older spelling): the periodic axes of the SPH particles and
-/// the grains. Both given must agree. Refuses what periodic SPH does not support yet: solids, and
-/// outlets that cross a periodic face.
-void read_periodic(CaseSpec& c, const Section& domain, const Section& dem,
-                   const std::optional<std::vector<bool>>& dem_periodic) {
+/// the grains. Both given must agree. Refuses what cannot be periodic: a lattice that does not close
+/// across a face, and outlets that cross a periodic face.
+void read_periodic(CaseSpec& c, const Section& domain, const std::optional<std::vector<bool>>& dem_periodic) {
     const auto dim = static_cast<std::size_t>(c.dimension);
     c.periodic.assign(dim, false);
     if (domain.has("periodic")) {
@@ -68,11 +67,6 @@ void read_periodic(CaseSpec& c, const Section& domain, const Section& dem,
         c.periodic_key = "dem.periodic";
     }
     if (!c.any_periodic()) return;
-    const Section& owner = c.periodic_key == "dem.periodic" ? dem : domain;
-    if (!c.solids.empty())
-        owner.fail("periodic", fmt::format("periodic axes do not support solids yet ({} is a [[solid]]); remove the "
-                                           "periodic axes or the solids",
-                                           c.solids.front().key));
     const char* axis = "xyz";
     // The particle lattice closes across a periodic face only if the period holds whole spacings.
     if (c.has_sph())
@@ -347,11 +341,18 @@ CaseSpec read_case_table(toml::table root, const std::filesystem::path& file, st
         b.shape = read_shape(f, dim, dx, false);
         b.material = table.resolve(f, "material", f.text("material"), Phase::solid);
         b.velocity = f.vector_or("velocity", dim, "[m/s]", std::vector<double>(static_cast<std::size_t>(dim), 0.0));
-        b.velocity_profile = f.choice("velocity_profile", "uniform", {"uniform", "cantilever_mode"});
+        b.velocity_profile =
+            f.choice("velocity_profile", "uniform", {"uniform", "cantilever_mode", "longitudinal_wave"});
         if (b.velocity_profile == "cantilever_mode") {
             b.mode_origin = f.number("mode_origin");
             b.mode_length = f.number("mode_length", positive("[m]"));
             b.mode_tip_velocity = f.number("mode_tip_velocity");
+        } else if (b.velocity_profile == "longitudinal_wave") {
+            const std::string axis = f.choice("wave_axis", "x", dim == 2 ? std::vector<std::string>{"x", "y"}
+                                                                          : std::vector<std::string>{"x", "y", "z"});
+            b.wave_axis = axis[0] - 'x';
+            b.wave_length = f.number("wave_length", positive("[m]"));
+            b.wave_amplitude = f.number("wave_amplitude");
         }
         c.solids.push_back(std::move(b));
     }
@@ -501,7 +502,7 @@ CaseSpec read_case_table(toml::table root, const std::filesystem::path& file, st
         c.remove_leaving = domain.choice("on_exit", "error", {"error", "remove"}) == "remove";
     }
     if (c.has_jet) build_jet(c);
-    read_periodic(c, domain, top.section("dem"), dem_periodic);
+    read_periodic(c, domain, dem_periodic);
     read_symmetry(c, domain);
 
     // Materials are read on first use; a defined but unused material is still checked and reported.

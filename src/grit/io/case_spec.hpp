@@ -48,9 +48,12 @@ struct BlockSpec {
     bool hydrostatic = false;  ///< fluid: start with the hydrostatic pressure of its own column
     /// solid: "uniform" (velocity), or "cantilever_mode" — the first bending mode of a cantilever
     /// clamped at x = mode_origin with free length mode_length, transverse (y) velocity mode_tip_velocity
-    /// at the tip (Gray, Monaghan & Swift 2001).
+    /// at the tip (Gray, Monaghan & Swift 2001), or "longitudinal_wave" — a velocity along the wave's axis
+    /// wave_axis (0: x) of wave_amplitude sin(2 pi x / wave_length), x the coordinate along that axis.
     std::string velocity_profile = "uniform";
     double mode_origin = 0.0, mode_length = 0.0, mode_tip_velocity = 0.0;
+    int wave_axis = 0;
+    double wave_length = 0.0, wave_amplitude = 0.0;
 };
 
 /// A jet inlet: emits layers of particles through a segment (2D) or disc (3D).

@@ -11,6 +11,7 @@
 #include "grit/analysis/crater.hpp"
 #include "grit/analysis/fluid_in_solid.hpp"
 #include "grit/analysis/probes.hpp"
+#include "grit/core/error.hpp"
 #include "grit/io/csv_file.hpp"
 #include "grit/io/hdf5_file.hpp"
 #include "grit/modules/cracks_table.hpp"
@@ -111,10 +112,22 @@ void CraterModule<Dim>::load(const io::Hdf5Group& group) {
 }
 
 template <int Dim>
+CracksModule<Dim>::CracksModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup) {
+    const double link = crack_options(setup.spec)->link_distance;
+    for (int k = 0; k < Dim; ++k)
+        if (setup.periodic_box.periodic[k] && !(2.0 * link < setup.periodic_box.length(k)))
+            throw core::InputError(fmt::format(
+                "key 'cracks.link_distance' = {} m: not less than half the period along the periodic axis {} ({} m): "
+                "a damaged particle would link to two images of one; shorten it or lengthen the domain",
+                link, "xyz"[k], setup.periodic_box.length(k)));
+}
+
+template <int Dim>
 void CracksModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     const auto m = analysis::analyse_cracks(state_.particles,
                                             state_.particles.fields().template get<double>("damage").data(),
-                                            *crack_options(setup_.spec));
+                                            *crack_options(setup_.spec), setup_.periodic_box);
     out.push_back(sim::OutputValue::real("damaged_area", m.damaged_area, domain::Combine::sum));
     out.push_back(sim::OutputValue::count("crack_count", static_cast<double>(m.crack_count), domain::Combine::whole_set));
 }

@@ -46,7 +46,9 @@ private:
 template <int Dim>
 class CracksModule final : public sim::Module<Dim> {
 public:
-    CracksModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup) : state_(state), setup_(setup) {}
+    /// Throws core::InputError when the link distance is not less than half a period (a particle would
+    /// link to two images of one).
+    CracksModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup);
     std::string name() const override { return "cracks"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;

@@ -61,15 +61,17 @@ CouplingModule<Dim>::CouplingModule(sim::State<Dim>& state, const sim::RunSetup<
             p.radius_factor, worst, p.min_porosity,
             p.radius_factor * std::pow(worst / (1.0 - p.min_porosity), 1.0 / Dim) * 1.01));
 
-    // The pair list bins the grains in cells of the largest R_c: a periodic axis must hold three.
+    // A particle takes a grain at its nearest image: over a period shorter than two reaches it would
+    // be within reach of two images of one grain.
     double largest_reach = 0.0;
     for (const double r : radii) largest_reach = std::max(largest_reach, p.radius_factor * 2.0 * r);
     for (int k = 0; k < Dim; ++k) {
         const double length = setup.periodic_box.length(k);
-        if (setup.periodic_box.periodic[k] && length < 3.0 * largest_reach * (1.0 + 1e-12))
+        if (setup.periodic_box.periodic[k] && !(length > 2.0 * largest_reach * (1.0 + 1e-12)))
             throw core::InputError(fmt::format(
                 "key 'coupling.radius' = {}: the coupling reaches {:.3g} m from the largest grain, and the periodic "
-                "axis {} is {:.3g} m long, less than three reaches (widen the domain, or use a smaller radius)",
+                "axis {} is {:.3g} m long, not more than two reaches: a particle would be within reach of two "
+                "periodic images of one grain (widen the domain, or use a smaller radius)",
                 p.radius_factor, largest_reach, "xyz"[k], length));
     }
 

@@ -58,6 +58,7 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     parameters_.artificial_stress = setup.spec.artificial_stress;
     parameters_.spacing = setup.spacing;
     parameters_.materials = sph.pair_coefficients();
+    parameters_.periodic_box = setup.periodic_box;
 }
 
 template <int Dim>
@@ -216,6 +217,7 @@ void SolidModule<Dim>::remove_failed() {
     for (Index i = 0; i < n && !fractured_rock; ++i) fractured_rock = gone[static_cast<std::size_t>(i)] == 2;
     if (fractured_rock) {
         const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
+        const auto& box = setup_.periodic_box;  // links across a periodic face by the nearest image
         const auto& list = state_.neighbors.list();
         const Index* nb = list.indices();
         // A path from a fractured particle to intact rock runs through fractured particles and ends in
@@ -228,7 +230,7 @@ void SolidModule<Dim>::remove_failed() {
             if (!fractured(i)) return;
             for (Index k = list.begin(i); k < list.end(i); ++k) {
                 const Index j = nb[k];
-                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(x[j] - x[i]) <= reach2) {
+                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(box.nearest_image(x[j] - x[i])) <= reach2) {
                     touches_intact[static_cast<std::size_t>(i)] = 1;
                     return;
                 }
@@ -239,7 +241,7 @@ void SolidModule<Dim>::remove_failed() {
             if (!fractured(i)) continue;
             for (Index k = list.begin(i); k < list.end(i); ++k) {
                 const Index j = nb[k];
-                if (j > i && fractured(j) && core::norm2(x[j] - x[i]) <= reach2) clusters.unite(i, j);
+                if (j > i && fractured(j) && core::norm2(box.nearest_image(x[j] - x[i])) <= reach2) clusters.unite(i, j);
             }
         }
         std::vector<std::uint8_t> anchored(static_cast<std::size_t>(n), 0);

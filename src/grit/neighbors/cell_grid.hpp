@@ -76,13 +76,15 @@ struct CellGrid {
     Index cell_of(const Vec& x) const noexcept { return linear(coords(x)); }
 
     /// Calls f(cell) for the 3^Dim cells around coordinates c (x fastest, then y, then z): periodic axes
-    /// wrap (they have at least three cells, so no cell comes twice), open axes stop at the grid's edge.
+    /// wrap (they have three cells or more, so no cell comes twice, or one, which is its own neighbour),
+    /// open axes stop at the grid's edge.
     template <class F>
     void for_each_cell_around(const Coords& c, F&& f) const {
         Coords lo{}, hi{};
         for (int k = 0; k < Dim; ++k) {
-            lo[k] = periodic[k] ? c[k] - 1 : std::max<Index>(c[k] - 1, 0);
-            hi[k] = periodic[k] ? c[k] + 1 : std::min<Index>(c[k] + 1, dims[k] - 1);
+            const bool wraps = periodic[k] && dims[k] > 1;
+            lo[k] = wraps ? c[k] - 1 : std::max<Index>(c[k] - 1, 0);
+            hi[k] = wraps ? c[k] + 1 : std::min<Index>(c[k] + 1, dims[k] - 1);
         }
         Coords nc{};
         auto visit = [&]() {
@@ -112,8 +114,10 @@ struct CellGrid {
     /// A grid over the box [lower, upper) whose `periodic` axes are divided into a whole number of cells
     /// of at least `cell_size` (from lower), and whose other axes cover points x[0..n) with cells of
     /// `cell_size` (or larger: cover_open_axes). Points are expected inside the box along the periodic
-    /// axes. Throws InputError when a periodic axis is shorter than three cells, BlowUpError when the
-    /// points have spread so far that the grid would be huge.
+    /// axes. A periodic axis shorter than three cells is one cell: a cell's neighbours along it would be
+    /// one cell met twice, so all its points are candidates once (whether a pair is near is then the
+    /// nearest image's business). Throws BlowUpError when the points have spread so far that the grid
+    /// would be huge.
     static CellGrid over_box(const std::array<bool, Dim>& periodic, const Vec& lower, const Vec& upper,
                              const Vec* x, Index n, double cell_size) {
         CellGrid g;
@@ -123,11 +127,8 @@ struct CellGrid {
         for (int k = 0; k < Dim; ++k) {
             if (!periodic[k]) continue;
             const double length = upper[k] - lower[k];
-            const auto count = static_cast<Index>(std::floor(length / cell_size));
-            if (count < 3)
-                throw core::InputError("periodic axis " + std::to_string(k) + " is " + std::to_string(length) +
-                                       " m long, less than three neighbour cells of " + std::to_string(cell_size) +
-                                       " m");
+            auto count = static_cast<Index>(std::floor(length / cell_size));
+            if (count < 3) count = 1;
             g.origin[k] = lower[k];
             g.dims[k] = count;
             g.cell_size[k] = length / count;

@@ -39,6 +39,8 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
     auto row = [&](const std::array<Index, Dim>& rc) {
         if (!grid.periodic[0]) {
             span(rc, std::max<Index>(c[0] - 1, 0), std::min<Index>(c[0] + 1, nx - 1));
+        } else if (nx == 1) {  // a short period: one cell, its own neighbour
+            span(rc, 0, 0);
         } else if (c[0] == 0) {
             span(rc, 0, 1);
             span(rc, nx - 1, nx - 1);
@@ -49,10 +51,14 @@ void NeighborList<Dim>::scan(const CellGrid<Dim>& grid, const std::vector<Index>
             span(rc, c[0] - 1, c[0] + 1);
         }
     };
-    // The neighbour cells along y (and z): periodic axes wrap (at least three cells, so none comes
-    // twice), open axes stop at the grid's edge.
+    // The neighbour cells along y (and z): periodic axes wrap (three cells or more, so none comes
+    // twice, or one, its own neighbour), open axes stop at the grid's edge.
     auto around = [&](int k, Index d, Index& out) {
         Index v = c[k] + d;
+        if (grid.periodic[k] && grid.dims[k] == 1) {
+            out = 0;
+            return d == 0;
+        }
         if (grid.periodic[k]) {
             out = v < 0 ? v + grid.dims[k] : (v >= grid.dims[k] ? v - grid.dims[k] : v);
             return true;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "grit/core/error.hpp"
 #include "grit/material/equation_of_state.hpp"
@@ -55,6 +56,8 @@ void add_block(const io::CaseSpec& spec, const io::BlockSpec& b, domain::IdSourc
         if (b.velocity_profile == "cantilever_mode")
             v[1] += b.mode_tip_velocity * cantilever_mode_shape(points[k][0] - b.mode_origin, b.mode_length) /
                     cantilever_mode_shape(b.mode_length, b.mode_length);
+        else if (b.velocity_profile == "longitudinal_wave")
+            v[b.wave_axis] += b.wave_amplitude * std::sin(2.0 * std::numbers::pi * points[k][b.wave_axis] / b.wave_length);
         p[i] = b.hydrostatic && g_norm > 0.0 ? rho0 * g_norm * (top - (-core::dot(g, points[k]) / g_norm)) : 0.0;
         particles.start(i, points[k], v, material::density_from_pressure(mat.eos, p[i]), rho0 * cell_volume, phase,
                         b.material);

@@ -1,9 +1,9 @@
-// The shortest periodic axis the neighbour grid can take (the refusal names the key and the lengths).
+// The shortest periodic axis a case can have (the refusal names the key and the lengths).
 #pragma once
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include <algorithm>
 #include <variant>
 
 #include "grit/core/error.hpp"
@@ -11,24 +11,33 @@
 
 namespace grit::sim {
 
-/// Throws core::InputError when a periodic axis of `setup` is shorter than three neighbour-list radii: the
-/// grid divides a periodic axis into whole cells of at least the list radius and scans one cell either side,
-/// so with fewer than three a pair would be met twice.
+/// Throws core::InputError when a periodic axis of `setup` is not longer than twice the reach of the
+/// particles' sums (the kernel support, or a non-local damage length if longer): a pair is taken at its
+/// nearest image, so over a shorter period a particle would meet two images of one neighbour and count
+/// only one. (The neighbour grid takes any longer period: below three list radii it is one cell along
+/// that axis.)
 template <int Dim>
 void check_periodic_lengths(const RunSetup<Dim>& setup) {
     const io::CaseSpec& spec = setup.spec;
-    const double skin = spec.neighbor_skin * setup.smoothing_length;
-    const double radius = std::visit([](const auto& k) { return k.support(); }, setup.kernel) + skin;
+    const double support = std::visit([](const auto& k) { return k.support(); }, setup.kernel);
+    double reach = support;
+    std::string what = "the kernel support";
+    for (const auto& m : spec.materials)
+        if (const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model);
+            jc && jc->nonlocal_damage() && jc->damage_length > reach) {
+            reach = jc->damage_length;
+            what = "the non-local damage length of material '" + m.name + "'";
+        }
     const char* axis = "xyz";
     for (int k = 0; k < Dim; ++k) {
         if (!setup.periodic_box.periodic[k]) continue;
         const double length = setup.periodic_box.length(k);
-        if (std::floor(length / radius) < 3.0)
+        if (!(length > 2.0 * reach * (1.0 + 1e-12)))
             throw core::InputError(fmt::format(
-                "key '{}': the domain is {:.6g} m long along the periodic axis {}, less than three neighbour-list "
-                "radii (3 x {:.6g} m = {:.6g} m: kernel support + numerics.neighbor_skin); lengthen the domain "
-                "along {} or refine numerics.particle_spacing",
-                spec.periodic_key, length, axis[k], radius, 3.0 * radius, axis[k]));
+                "key '{}': the domain is {:.6g} m long along the periodic axis {}, not more than twice {} "
+                "(2 x {:.6g} m = {:.6g} m): a particle would meet two periodic images of one neighbour; lengthen "
+                "the domain along {} or refine numerics.particle_spacing",
+                spec.periodic_key, length, axis[k], what, reach, 2.0 * reach, axis[k]));
     }
 }
 

@@ -17,9 +17,12 @@ namespace grit::sph {
 
 namespace {
 
-template <int Dim, class K>
+// `image` takes x_a - x_b to its nearest periodic image; without periodic axes it is OpenImage, the loop as
+// it was before periodic axes.
+template <int Dim, class K, class Image>
 void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::NeighborList<Dim>& nl, const K& kernel,
-                      const SolidRateParameters<Dim>& prm, const SphWorkspace& sph, SolidWorkspace<Dim>& work) {
+                      const SolidRateParameters<Dim>& prm, const SphWorkspace& sph, SolidWorkspace<Dim>& work,
+                      const Image image) {
     using Vec = core::Vec<Dim>;
     using core::SymTensor3;
     const Index n = ps.size();
@@ -106,7 +109,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
         const Vec xa = x[a];
         for (Index k = lists.upper_begin(a); k < lists.upper_end(a); ++k) {
             const Index b = upper[k];
-            const Vec xab = xa - x[b];
+            const Vec xab = image(xa - x[b]);
             const double r = std::sqrt(core::norm2(xab));
             const double f = kernel.gradient_factor(r);
             upper_f[k] = f;
@@ -125,7 +128,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
                 }
         }
         for (Index k = lists.other_begin(a); k < lists.other_end(a); ++k)
-            other_f[k] = kernel.gradient_factor(std::sqrt(core::norm2(xa - x[other[k]])));
+            other_f[k] = kernel.gradient_factor(std::sqrt(core::norm2(image(xa - x[other[k]]))));
     };
     auto moment_finish = [&](Index a, const MomentSum<Dim>& sum) {
         double mm[3][3] = {{0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
@@ -202,7 +205,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double f = upper_f[k];
             if (f == 0.0) continue;
             const Index b = upper[k];
-            const Vec xab = xa - x[b];
+            const Vec xab = image(xa - x[b]);
             const double r2 = core::norm2(xab);
             const Vec vab = va - v[b];
             const double vx = core::dot(vab, xab);
@@ -254,7 +257,7 @@ void solid_rates_loop(particles::SphParticles<Dim>& ps, const neighbors::Neighbo
             const double f = other_f[k];
             if (f == 0.0) continue;
             const Index b = other[k];
-            const Vec xab = xa - x[b];
+            const Vec xab = image(xa - x[b]);
             const double r2 = core::norm2(xab);
             const Vec vab = va - v[b];
             const double vx = core::dot(vab, xab);
@@ -297,7 +300,13 @@ template <int Dim>
 void compute_solid_rates(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                          const Kernel<Dim>& kernel, const SolidRateParameters<Dim>& parameters,
                          const SphWorkspace& sph, SolidWorkspace<Dim>& workspace) {
-    std::visit([&](const auto& k) { solid_rates_loop(particles, neighbors, k, parameters, sph, workspace); }, kernel);
+    std::visit(
+        [&](const auto& k) {
+            neighbors::with_image(parameters.periodic_box, [&](const auto image) {
+                solid_rates_loop(particles, neighbors, k, parameters, sph, workspace, image);
+            });
+        },
+        kernel);
 }
 
 template void compute_solid_rates<2>(particles::SphParticles<2>&, const neighbors::NeighborList<2>&, const Kernel<2>&,

@@ -10,6 +10,7 @@
 #include "grit/material/solid_model.hpp"
 #include "grit/neighbors/half_lists.hpp"
 #include "grit/neighbors/neighbor_list.hpp"
+#include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
 #include "grit/sph/fluid_rates.hpp"
 #include "grit/sph/kernels.hpp"
@@ -73,6 +74,7 @@ struct SolidRateParameters {
     double artificial_stress_exponent = 4.0;  ///< n
     double spacing = 0.0;            ///< dx, for f_ab = W(r)/W(dx)
     std::vector<PairCoefficients> materials;
+    neighbors::PeriodicBox<Dim> periodic_box;  ///< pairs across a periodic face by their nearest image
 };
 
 /// Fills density_rate and acceleration of every solid particle (fixed ones too: their acceleration

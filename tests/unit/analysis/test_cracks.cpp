@@ -85,6 +85,26 @@ TEST(Cracks, DiagonalChainLinksOnlyWithinLinkDistance) {
     EXPECT_EQ(apart.largest_crack, 1);
 }
 
+// A damaged line that crosses a periodic face (x in [0, 20 dx)): one crack of 8 with the box, two of 4
+// without it; a link distance of half the period or more is refused.
+TEST(Cracks, ALineAcrossAPeriodicFaceIsOneCrack) {
+    grit::particles::SphParticles<2> ps;
+    auto at = [](Index i, Index j) { return i + 20 * j; };
+    for (Index j = 0; j < 10; ++j)
+        for (Index i = 0; i < 20; ++i) add_solid<2>(ps, {{(i + 0.5) * dx, j * dx}});
+    std::vector<double> damage(static_cast<std::size_t>(ps.size()), 0.0);
+    for (Index i : {16, 17, 18, 19, 0, 1, 2, 3}) damage[at(i, 4)] = 1.0;
+    const auto box = grit::neighbors::PeriodicBox<2>::make({true, false}, {{0.0, -1.0}}, {{20 * dx, 1.0}});
+
+    const auto across = analyse_cracks<2>(ps, damage.data(), options(1.5 * dx), box);
+    EXPECT_EQ(across.crack_count, 1);
+    EXPECT_EQ(across.largest_crack, 8);
+    const auto open = analyse_cracks<2>(ps, damage.data(), options(1.5 * dx));
+    EXPECT_EQ(open.crack_count, 2);
+    EXPECT_EQ(open.largest_crack, 4);
+    EXPECT_THROW(analyse_cracks<2>(ps, damage.data(), options(10.0 * dx), box), grit::core::InputError);
+}
+
 // D exactly at the threshold is damaged; just below is not, and splits the line in two.
 TEST(Cracks, DamageAtThresholdCounts) {
     grit::particles::SphParticles<2> ps;

@@ -17,21 +17,20 @@ using grit::Index;
 namespace {
 
 template <int Dim>
-void check_against_brute_force(bool periodic) {
+void check_against_brute_force(bool periodic, double length = 0.02, Index n = 600) {
     GrainDomain<Dim> domain;
     for (int k = 0; k < Dim; ++k) {
         domain.periodic[k] = periodic && k < 2;
         domain.lower[k] = 0.0;
-        domain.upper[k] = 0.02;
+        domain.upper[k] = length;
     }
     domain.finalise();
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    const Index n = 600;
     std::vector<grit::core::Vec<Dim>> x(n);
     std::vector<double> r(n);
     for (Index i = 0; i < n; ++i) {
-        for (int k = 0; k < Dim; ++k) x[i][k] = 0.02 * u(rng);
+        for (int k = 0; k < Dim; ++k) x[i][k] = length * u(rng);
         r[i] = 0.0005 + 0.0005 * u(rng);
     }
     const double skin = 0.0003;
@@ -81,6 +80,11 @@ TEST(GrainNeighbors, MatchBruteForce2D) { check_against_brute_force<2>(false); }
 TEST(GrainNeighbors, MatchBruteForce3D) { check_against_brute_force<3>(false); }
 TEST(GrainNeighbors, MatchBruteForcePeriodic2D) { check_against_brute_force<2>(true); }
 TEST(GrainNeighbors, MatchBruteForcePeriodic3D) { check_against_brute_force<3>(true); }
+// Periods between two and three list cells (cells of 2.3 mm): one cell along x and y.
+TEST(GrainNeighbors, MatchBruteForceShortPeriods) {
+    check_against_brute_force<2>(true, 0.005, 60);
+    check_against_brute_force<3>(true, 0.005, 120);
+}
 
 TEST(GrainNeighbors, WrapAndNearestImage) {
     GrainDomain<2> d;

@@ -592,8 +592,11 @@ TEST_F(CaseReaderTest, PeriodicAxes) {
     // The period must hold whole particle spacings (0.75 m / 0.015625 m = 48).
     expect_error(minimal_2d, {"domain.periodic=[\"x\"]", "domain.max=[0.63, 0.5]"},
                  {"domain.max", "not a whole number", "periodic face"});
-    expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases" / "elastic_impact_2d" / "case.toml",
-                      {"domain.periodic=[\"x\"]"}, {"domain.periodic", "[\"x\"]", "solid[0]", "not support solids"});
+    // Solids may be periodic too.
+    const std::string solid = "\n[[solid]]\nshape = \"box\"\nmin = [-0.125, 0.25]\nmax = [0.625, 0.3125]\nmaterial = \"OFHC_copper\"\n";
+    const auto periodic_solid = read_ok(minimal_2d + solid, {"domain.periodic=[\"x\"]"});
+    EXPECT_TRUE(periodic_solid.any_periodic());
+    EXPECT_EQ(periodic_solid.solids.size(), 1u);
 }
 
 // The Johnson-Cook damage length (non-local damage): 0 by default (the paper's local law), read from a

@@ -132,9 +132,16 @@ TEST(CellGrid, PeriodicAxesHoldAWholeNumberOfCells) {
     EXPECT_EQ(g.coords(x[1])[0], 5);
     EXPECT_EQ(g.coords(x[1])[1], 2);
     EXPECT_EQ(g.coords(x[2])[2], 1);
-    // Fewer than three cells on a periodic axis cannot be scanned without visiting a cell twice.
-    EXPECT_THROW((CellGrid<3, CellOrder::x_slowest>::over_box({true, true, false}, lower, upper, x.data(), 3, 0.34)),
-                 grit::core::InputError);
+    // Fewer than three cells on a periodic axis could not be scanned without visiting a cell twice: the
+    // axis is one cell, its own neighbour.
+    const auto short_axis =
+        CellGrid<3, CellOrder::x_slowest>::over_box({true, true, false}, lower, upper, x.data(), 3, 0.34);
+    EXPECT_EQ(short_axis.dims[0], 5);  // floor(2 / 0.34)
+    EXPECT_EQ(short_axis.dims[1], 1);  // floor(0.95 / 0.34) = 2 cells: one
+    EXPECT_DOUBLE_EQ(short_axis.cell_size[1], 0.95);
+    int visits = 0;
+    short_axis.for_each_cell_around(short_axis.coords(x[2]), [&](Index) { ++visits; });
+    EXPECT_EQ(visits, 3 * 1 * 3);  // x: 3 cells, y: its own, z: 3 (open, inside the grid)
 }
 
 TEST(CellGrid, CoordsDivideOrMultiplyAsTheGridSays) {

@@ -1,6 +1,6 @@
 // Periodic axes: the PeriodicBox (wrap, nearest image), and the SPH neighbour lists and the cross-set
 // pair list over a periodic box against a brute-force nearest-image search, in 2D and 3D, with particles
-// crowded at the faces and boxes as short as three list radii.
+// crowded at the faces and boxes as short as three list radii, and shorter (down to two).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -146,6 +146,15 @@ TEST(PeriodicNeighborList, MatchesBruteForceNearestImage3D) {
 TEST(PeriodicNeighborList, ShortestBoxOfThreeCells) {
     check_lists<2>(make_box<2>({true, true}, 0.0, 0.31), 400, 0.1, 31);
     check_lists<3>(make_box<3>({true, true, false}, 0.0, 0.31), 600, 0.1, 32);
+}
+
+// Periods shorter than three list radii but longer than two: the axis is one cell, whose particles are all
+// candidates once (along x, the row's own span; along y and z, the cell around).
+TEST(PeriodicNeighborList, ShortBoxesOfOneCell) {
+    check_lists<2>(make_box<2>({true, false}, 0.0, 0.25), 300, 0.1, 41);
+    check_lists<2>(make_box<2>({true, true}, 0.0, 0.21), 300, 0.1, 42);
+    check_lists<3>(make_box<3>({false, true, true}, 0.0, 0.25), 400, 0.1, 43);
+    check_lists<3>(make_box<3>({true, true, true}, 0.0, 0.29), 400, 0.1, 44);
 }
 
 // A particle wrapped across a face has moved by its step, not by the period: the lists stay valid.
