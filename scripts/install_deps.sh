@@ -11,6 +11,7 @@ packages=(
   python3 python3-numpy python3-matplotlib python3-vtk9
   python3-dev pybind11-dev python3-pytest  # the Python module (docs/python.md) and its tests
   liggghts-doc  # the STL chute of LIGGGHTS' chute_wear tutorial (cases/chute_wear_3d); 12 MB, no binaries
+  clang-14 libclang-rt-14-dev llvm-14  # make fuzz: libFuzzer, clang's sanitizers and llvm-cov (fuzz/)
 )
 
 missing=()

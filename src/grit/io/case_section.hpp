@@ -24,6 +24,14 @@ namespace grit::io {
 /// A TOML value as the case file writes it (strings quoted), for messages.
 std::string repr(const toml::node& node);
 
+/// The value of a number node (is_number()) as a double. An integer beyond 2^53 is rounded to the nearest
+/// double, as a float written with those digits would be (toml++'s value<double>() gives none for it, and
+/// the fuzzed case reader found the exception that made).
+inline double number_value(const toml::node& n) {
+    if (const auto* i = n.as_integer()) return static_cast<double>(i->get());
+    return n.as_floating_point()->get();
+}
+
 /// A check on a number; returns an empty string when the value is fine, else the reason.
 using NumberCheck = std::function<std::string(double)>;
 
@@ -74,7 +82,7 @@ public:
         const toml::node* n = take(key);
         if (!n) return std::nullopt;
         if (!n->is_number()) fail(key, "must be a number");
-        const double v = n->value<double>().value();
+        const double v = number_value(*n);
         if (!std::isfinite(v)) fail(key, "must be finite");
         if (check)
             if (auto why = check(v); !why.empty()) fail(key, why);
@@ -132,7 +140,7 @@ public:
         std::vector<double> out;
         for (const auto& e : *a) {
             if (!e.is_number()) fail(key, fmt::format("must be an array of {} numbers {}", size, unit));
-            const double v = e.value<double>().value();
+            const double v = number_value(e);
             if (!std::isfinite(v)) fail(key, "must hold finite numbers");
             out.push_back(v);
         }
@@ -146,9 +154,9 @@ public:
         if (!a || a->empty()) fail(key, fmt::format("must be a non-empty array of numbers {}", unit));
         std::vector<double> out;
         for (const auto& e : *a) {
-            if (!e.is_number() || !std::isfinite(e.value<double>().value()))
+            if (!e.is_number() || !std::isfinite(number_value(e)))
                 fail(key, fmt::format("must be an array of finite numbers {}", unit));
-            out.push_back(e.value<double>().value());
+            out.push_back(number_value(e));
         }
         return out;
     }

@@ -118,6 +118,10 @@ std::vector<Facet> read_stl(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) fail(file, "cannot be opened");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return parse_stl(bytes, file);
+}
+
+std::vector<Facet> parse_stl(const std::string& bytes, const std::filesystem::path& file) {
     if (bytes.empty()) fail(file, "the file is empty");
     std::vector<Facet> facets;
     std::uint32_t count = 0;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "grit/core/vec.hpp"
@@ -22,6 +23,10 @@ using Facet = std::array<core::Vec<3>, 3>;
 /// unreadable, neither form, a bad number (with its line), a loop without three vertices, no facet, a
 /// coordinate that is not finite.
 std::vector<Facet> read_stl(const std::filesystem::path& file);
+
+/// The same for a file's bytes already in memory (`file` names it in messages): what read_stl does once
+/// it has read the file, and what the STL reader's fuzz target calls.
+std::vector<Facet> parse_stl(const std::string& bytes, const std::filesystem::path& file);
 
 /// Writes `facets` as a binary STL (normals from the corners' order); for tests and generated meshes.
 void write_stl(const std::filesystem::path& file, const std::vector<Facet>& facets);

@@ -40,11 +40,11 @@ SolidModule<Dim>::SolidModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& 
     f.add<std::int32_t>("fixed", 0, true);  // clamped particles (set by the open-boundaries module)
 
     // Snapshots show the solid state on solids only, and the bulking pressure (eq. 41) on JH-2 solids only.
-    const auto solid = static_cast<std::int32_t>(Phase::solid);
-    const auto on_solids = [solid](std::int32_t phase, std::int32_t) { return phase == solid; };
+    constexpr auto solid = static_cast<std::int32_t>(Phase::solid);
+    const auto on_solids = [](std::int32_t phase, std::int32_t) { return phase == solid; };
     for (const char* name : {"deviatoric_stress", "plastic_strain", "damage", "von_mises", "temperature"})
         f.base(name).set_output_scope(on_solids);
-    f.base("bulking_pressure").set_output_scope([solid, brittle = brittle_](std::int32_t phase, std::int32_t m) {
+    f.base("bulking_pressure").set_output_scope([brittle = brittle_](std::int32_t phase, std::int32_t m) {
         return phase == solid && brittle[static_cast<std::size_t>(m)];
     });
     std::vector<double> damage_length;
