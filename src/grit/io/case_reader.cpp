@@ -93,7 +93,7 @@ void read_periodic(CaseSpec& c, const Section& domain, const std::optional<std::
 }
 
 /// domain.symmetry = ["x"], or jet.symmetric: the plane x = 0 is a symmetry plane (modules/symmetry_plane).
-/// Refuses what the images do not support: a periodic x axis, ISPH, mesh walls.
+/// Refuses what the images do not support, each with its reason: a periodic x axis, ISPH, mesh walls.
 void read_symmetry(CaseSpec& c, const Section& domain) {
     if (domain.has("symmetry")) {
         const auto axes = read_axes(domain, "symmetry", c.dimension);
@@ -108,12 +108,19 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
     const std::string key = c.symmetry_key;
     if (!c.periodic.empty() && c.periodic[0])
         throw InputError(fmt::format("keys '{}' and '{}' = [\"x\", ...]: the x axis cannot be periodic and mirrored "
-                                     "at once", key, c.periodic_key));
+                                     "at once (the mirror images are made for the plane x = 0 alone, not for its "
+                                     "periodic copies); lay the whole period, or make another axis periodic",
+                                     key, c.periodic_key));
     if (c.fluid_solver == "isph")
-        throw InputError(fmt::format("key '{}': the symmetry plane supports fluid.solver = \"wcsph\" only", key));
+        throw InputError(fmt::format("key '{}': the symmetry plane supports fluid.solver = \"wcsph\" only (the pressure "
+                                     "solve would need each mirror image's row to copy its source's pressure); lay "
+                                     "the whole set-up, or use wcsph",
+                                     key));
     if (!c.meshes.empty() || c.has_thin_walls())
-        throw InputError(fmt::format("key '{}': the symmetry plane does not mirror mesh walls ({}); lay the whole "
-                                     "set-up instead", key, !c.meshes.empty() ? c.meshes.front().key : "[[wall]] thin"));
+        throw InputError(fmt::format("key '{}': the symmetry plane does not mirror mesh walls ({}: a mesh spans both "
+                                     "sides of the plane, and neither its wear nor a thin wall's sides are mirrored "
+                                     "across x = 0); lay the whole set-up instead",
+                                     key, !c.meshes.empty() ? c.meshes.front().key : "[[wall]] thin"));
     if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
         throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
                                      "is run)", fmt::join(c.domain_max, ", "), key));
