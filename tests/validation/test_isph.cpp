@@ -10,6 +10,7 @@
 #include "grit/modules/probes_table.hpp"
 #include "support/case_fixture.hpp"
 #include "support/martin_moyce.hpp"
+#include "support/validation_figures.hpp"
 
 using grit::testing::in_memory;
 using grit::testing::load_case;
@@ -93,6 +94,79 @@ TEST(Isph, DamBreakFrontAgainstMartinMoyce) {
         ++checked;
     }
     EXPECT_GE(checked, 3);
+}
+
+// The tank's x >= 0 half on a symmetry plane (cases/hydrostatic_2d/half.toml): the mirror images' rows of
+// the pressure system read their sources' unknowns, so the half holds the whole tank's pressure. The same
+// measure and tolerance as the whole tank (HydrostaticTankPressure), the probes on the plane itself.
+TEST(Isph, HalfTankOnASymmetryPlaneHoldsTheHydrostaticPressure) {
+    grit::sim::Simulation<2> sim(load_case("hydrostatic_2d/half.toml", {"fluid.solver=isph", "time.end=1.5"}),
+                                 in_memory());
+    const double surface = 0.3;
+    const auto& probes = sim.spec().module_spec<grit::modules::ProbesSpec>(grit::modules::ProbesSpec::key)->probes;
+    std::vector<double> mean(probes.size(), 0.0);
+    const int samples = 21;
+    for (int s = 0; s < samples; ++s) {
+        sim.advance_to(0.5 + 0.05 * s);
+        for (std::size_t k = 0; k < probes.size(); ++k) mean[k] += sim.probe(k) / samples;
+    }
+    double largest = 0.0;
+    for (std::size_t k = 0; k < probes.size(); ++k) {
+        const double expected = rho0 * g * (surface - probes[k].position[1]);
+        const double error = (mean[k] - expected) / expected;
+        std::printf("ISPH half tank: %s mean = %.1f Pa (%+.1f %% of rho g depth)\n", probes[k].name.c_str(), mean[k],
+                    100.0 * error);
+        EXPECT_NEAR(mean[k], expected, 0.03 * expected) << probes[k].name;
+        if (std::abs(error) > std::abs(largest)) largest = error;
+    }
+    grit::testing::record_figure({"largest probe error (mean over 0.5-1.5 s)", 100.0 * largest, "%", "3 % per probe",
+                                  "p = rho g depth"});
+    const auto& ps = sim.particles();
+    for (grit::Index i = 0; i < ps.size(); ++i) {
+        if (ps.phase()[i] != 0 || ps.is_image(i)) continue;
+        const auto& x = ps.position()[i];
+        ASSERT_TRUE(x[0] >= 0.0 && x[0] < 0.2 && x[1] >= 0.0) << "fluid particle " << i << " left the half tank";
+    }
+    EXPECT_LT(grit::analysis::compute_diagnostics(ps).max_velocity, 0.05) << "the tank is not at rest";
+}
+
+// A column 2L x 2L collapsing to both sides (cases/double_dambreak_2d): each side is Martin & Moyce's dam
+// break with a free-slip wall. The whole and its half on a symmetry plane: the surge front Z = z/L within
+// 10 % of the data for 1.5 <= T <= 2.5 (as DamBreakFrontAgainstMartinMoyce), and the half within 1 % of
+// the whole (two solves to a tolerance of 1e-6, not the same sums: not round-off).
+TEST(Isph, DoubleDamBreakOnASymmetryPlaneIsTheWholeOne) {
+    auto data = grit::testing::martin_moyce();
+    std::sort(data.begin(), data.end(), [](auto l, auto r) { return l.T < r.T; });
+    const double L = 0.2, scale = std::sqrt(2.0 * g / L);
+    grit::sim::Simulation<2> whole(load_case("double_dambreak_2d/case.toml"), in_memory());
+    grit::sim::Simulation<2> half(load_case("double_dambreak_2d/half.toml"), in_memory());
+    int checked = 0;
+    double largest = 0.0, apart = 0.0;
+    for (const auto& [T, Z_exp] : data) {
+        if (T < 1.5 || T > 2.5) continue;
+        whole.advance_to(T / scale);
+        half.advance_to(T / scale);
+        const double Z_whole = whole.probe("front") / L, Z_half = half.probe("front") / L;
+        const double H_whole = whole.probe("height") / (2.0 * L), H_half = half.probe("height") / (2.0 * L);
+        std::printf("ISPH double dam break: T = %.3f  Z_exp = %.3f  whole %.3f (%+.1f %%)  half %.3f (%+.1f %% of the "
+                    "whole); height %.3f, half %+.2f %%\n",
+                    T, Z_exp, Z_whole, 100.0 * (Z_whole - Z_exp) / Z_exp, Z_half, 100.0 * (Z_half - Z_whole) / Z_whole,
+                    H_whole, 100.0 * (H_half - H_whole) / H_whole);
+        EXPECT_LT(std::abs(Z_whole - Z_exp) / Z_exp, 0.10) << "T = " << T;
+        EXPECT_LT(std::abs(Z_half - Z_exp) / Z_exp, 0.10) << "T = " << T;
+        EXPECT_LT(std::abs(Z_half - Z_whole) / Z_whole, 0.01) << "T = " << T;
+        EXPECT_LT(std::abs(H_half - H_whole) / H_whole, 0.01) << "T = " << T;
+        for (const double e : {(Z_whole - Z_exp) / Z_exp, (Z_half - Z_exp) / Z_exp})
+            if (std::abs(e) > std::abs(largest)) largest = e;
+        for (const double e : {(Z_half - Z_whole) / Z_whole, (H_half - H_whole) / H_whole})
+            if (std::abs(e) > std::abs(apart)) apart = e;
+        ++checked;
+    }
+    EXPECT_GE(checked, 3);
+    grit::testing::record_figure({"largest front error, whole and half, 1.5 <= T <= 2.5", 100.0 * largest, "%", "10 %",
+                                  "Martin & Moyce (1952)"});
+    grit::testing::record_figure({"half against the whole: front and height", 100.0 * apart, "%", "1 %",
+                                  "the whole double dam break"});
 }
 
 TEST(Isph, UnconvergedSolveIsAnErrorNamingTheStep) {

@@ -136,12 +136,13 @@ TEST(ChuteWear, AgreesWithLiggghts) {
     sim.advance_to(spec.end_time);
     const auto* wear = sim.module<grit::modules::MeshWearModule<3>>();
     ASSERT_NE(wear, nullptr);
+    const auto wear_map = wear->wear_map();
     const auto& mesh = *spec.meshes.front().mesh;
     std::vector<TriangleWear> grit_wear;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
         double x = 0.0;
         for (const auto v : mesh.triangles()[t]) x += mesh.vertices()[static_cast<std::size_t>(v)][0] / 3.0;
-        grit_wear.push_back({x, mesh.area(t), wear->wear_map().mass(t) / mesh.area(t)});
+        grit_wear.push_back({x, mesh.area(t), wear_map.mass(t) / mesh.area(t)});
     }
     auto total = [](const std::vector<TriangleWear>& t) {
         double m = 0.0, mx = 0.0;
@@ -229,11 +230,12 @@ TEST(PeltonBucket, JetSplitWithoutCrossingLeakOrDeadWaterAndWearMidBucket) {
     }
     const auto* wear = sim.module<grit::modules::MeshWearModule<3>>();
     ASSERT_NE(wear, nullptr);
+    const auto wear_map = wear->wear_map();
     double total = 0.0, mean_y = 0.0, mean_x = 0.0;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
         grit::core::Vec<3> centre = grit::core::Vec<3>::zero();
         for (const auto v : mesh.triangles()[t]) centre += mesh.vertices()[static_cast<std::size_t>(v)] * (1.0 / 3.0);
-        const double m = wear->wear_map().mass(t);
+        const double m = wear_map.mass(t);
         total += m, mean_y += m * std::abs(centre[1]), mean_x += m * centre[0];
     }
     mean_y /= total, mean_x /= total;
@@ -408,15 +410,16 @@ TEST(SloshingTank, SandRidesTheSurgeInsideTheStlTankAndWearsOnlyTheFloorFirst) {
     // and sums to the series' total.
     const auto* wear = sim.module<grit::modules::MeshWearModule<3>>();
     ASSERT_NE(wear, nullptr);
+    const auto wear_map = wear->wear_map();
     const auto& mesh = *spec.meshes.front().mesh;
     double total = 0.0, on_floor = 0.0;
     std::int64_t impacts = 0, floor_impacts = 0;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
         double top = 0.0;
         for (const auto v : mesh.triangles()[t]) top = std::max(top, mesh.vertices()[static_cast<std::size_t>(v)][2]);
-        total += wear->wear_map().mass(t);
-        impacts += wear->wear_map().impacts(t);
-        if (top == 0.0) on_floor += wear->wear_map().mass(t), floor_impacts += wear->wear_map().impacts(t);
+        total += wear_map.mass(t);
+        impacts += wear_map.impacts(t);
+        if (top == 0.0) on_floor += wear_map.mass(t), floor_impacts += wear_map.impacts(t);
     }
     const double series_total = grit::testing::output_value(sim, "wear_mass_total");
     std::printf("  %lld impacts (%lld on the floor), wear %.4g kg (%.4g on the floor; series %.4g)\n",

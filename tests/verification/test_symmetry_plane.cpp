@@ -2,14 +2,21 @@
 // symmetric set-up is the whole one. The water jet on the copper (the AWJ case without its grains) run
 // on its x >= 0 half gives the whole run's stagnation pressure, crater, plastic strain and, halved, its
 // kinetic energy and mass, to round-off (the sums add in another order); the images are mirror images
-// of their sources at every step boundary and never reach an output; grains stay on their side.
+// of their sources at every step boundary and never reach an output; grains stay on their side. Grains on
+// a mesh wall across the plane wear it as the whole set-up's grains do.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "grit/core/error.hpp"
+#include "grit/modules/mesh_wear.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
 
@@ -101,4 +108,137 @@ TEST(SymmetryPlane, ImagesMirrorTheirSourcesAndStayOutOfOutputs) {
     const auto& g = half.grains()->grains();
     ASSERT_GT(g.size(), 0);
     for (Index k = 0; k < g.size(); ++k) EXPECT_GE(g.position()[k][0], 0.9 * g.radius()[k]) << "grain " << k;
+}
+
+namespace {
+
+// A plate 8 x 8 mm at z = 0 of 1 mm cells, two triangles each (normals up), each cell at x < 0 the
+// mirror image of its twin (the diagonals mirrored), as ASCII STL.
+std::string symmetric_plate_stl() {
+    std::string out = "solid plate\n";
+    auto facet = [&](std::array<std::array<double, 2>, 3> c) {
+        out += "facet normal 0 0 1\nouter loop\n";
+        for (const auto& p : c) out += "vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " 0\n";
+        out += "endloop\nendfacet\n";
+    };
+    for (int i = -4; i < 4; ++i)
+        for (int j = -4; j < 4; ++j) {
+            const double x0 = 1e-3 * i, x1 = x0 + 1e-3, y0 = 1e-3 * j, y1 = y0 + 1e-3;
+            if (i >= 0) {  // diagonal (x0, y0) - (x1, y1)
+                facet({{{x0, y0}, {x1, y0}, {x1, y1}}});
+                facet({{{x0, y0}, {x1, y1}, {x0, y1}}});
+            } else {  // diagonal (x1, y0) - (x0, y1): the mirror image of the twin's
+                facet({{{x1, y0}, {x0, y1}, {x0, y0}}});
+                facet({{{x1, y0}, {x1, y1}, {x0, y1}}});
+            }
+        }
+    return out + "endsolid plate\n";
+}
+
+// Grains striking the plate: a twin pair (x = +-1 mm, flying apart at 30 degrees from the plate) and one
+// on the plane itself, flying along it; the half has the x >= 0 grain of the pair and the one on the plane.
+std::string plate_case(bool half) {
+    std::string text = R"(
+[simulation]
+title = "grains on a plate across a symmetry plane"
+dimension = 3
+[time]
+end = 3.0e-4
+[output]
+interval = 1.0e-4
+[physics]
+gravity = [0.0, 0.0, -9.81]
+[dem]
+contact_law = "hertz"
+[[grains]]
+material = "sand"
+arrangement = "single"
+position = [1.0e-3, 0.5e-3, 1.5e-3]
+diameter = 1.0e-3
+velocity = [17.3205, 2.0, -10.0]
+[[grains]]
+material = "sand"
+arrangement = "single"
+position = [0.0, -2.0e-3, 1.5e-3]
+diameter = 1.0e-3
+velocity = [0.0, 5.0, -10.0]
+[[mesh]]
+name = "plate"
+file = "grit_test_symmetric_plate.stl"
+material = "steel"
+wear_model = "finnie"
+[domain]
+min = [-0.03, -0.03, -0.01]
+max = [0.03, 0.03, 0.03]
+)";
+    if (half) return text + "symmetry = [\"x\"]\n";
+    return text + R"(
+[[grains]]
+material = "sand"
+arrangement = "single"
+position = [-1.0e-3, 0.5e-3, 1.5e-3]
+diameter = 1.0e-3
+velocity = [-17.3205, 2.0, -10.0]
+)";
+}
+
+}  // namespace
+
+// The half books the wear its grains cause, and a triangle's wear is its own with its mirror image's,
+// except for the grain on the plane (no twin), booked once: triangle by triangle the whole set-up's wear
+// map, to round-off (the twins' contacts are mirrored computations), and the same totals.
+TEST(SymmetryPlane, GrainsWearAMeshAcrossThePlaneAsTheWholeSetUpDoes) {
+    std::ofstream(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl") << symmetric_plate_stl();
+    auto run = [](bool half) {
+        auto sim = std::make_unique<grit::sim::Simulation<3>>(
+            grit::testing::read_case_text(plate_case(half), half ? "plate_half" : "plate_whole"),
+            grit::testing::in_memory());
+        sim->advance_to(3.0e-4);
+        return sim;
+    };
+    const auto whole = run(false), half = run(true);
+    std::filesystem::remove(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl");
+    const auto w = whole->module<grit::modules::MeshWearModule<3>>()->wear_map();
+    const auto h = half->module<grit::modules::MeshWearModule<3>>()->wear_map();
+    ASSERT_EQ(w.size(), 128u);
+    ASSERT_EQ(h.size(), w.size());
+    EXPECT_EQ(whole->impacts().total(), 3u);
+    EXPECT_EQ(half->impacts().total(), 2u);  // the log holds the half's grains' impacts
+    double largest = 0.0;
+    int struck = 0;
+    for (std::size_t t = 0; t < w.size(); ++t) {
+        largest = std::max(largest, w.mass(t));
+        struck += w.impacts(t) > 0;
+    }
+    ASSERT_GT(largest, 0.0);
+    EXPECT_GE(struck, 3);
+    double differs = 0.0;
+    for (std::size_t t = 0; t < w.size(); ++t) differs = std::max(differs, std::abs(h.mass(t) - w.mass(t)));
+    std::printf("mesh across the plane: %d triangles struck, half against whole within %.2g of the largest wear\n",
+                struck, differs / largest);
+    for (std::size_t t = 0; t < w.size(); ++t) {
+        EXPECT_NEAR(h.mass(t), w.mass(t), 1e-9 * largest) << "triangle " << t;
+        EXPECT_EQ(h.impacts(t), w.impacts(t)) << "triangle " << t;
+        EXPECT_NEAR(h.mean_angle(t), w.mean_angle(t), 1e-9 * 90.0) << "triangle " << t;
+    }
+    EXPECT_NEAR(grit::testing::output_value(*half, "wear_mass_total"),
+                grit::testing::output_value(*whole, "wear_mass_total"), 1e-9 * largest);
+}
+
+// A mesh that reaches x < 0 must be symmetric about the plane: the plate shifted 0.5 mm is refused,
+// naming the mesh and a triangle without its mirror image.
+TEST(SymmetryPlane, MeshNotSymmetricAboutThePlaneIsRefused) {
+    std::ofstream(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl") << symmetric_plate_stl();
+    auto text = plate_case(true);
+    text.replace(text.find("wear_model = \"finnie\""), 0, "translate = [0.5e-3, 0.0, 0.0]\n");
+    try {
+        grit::sim::Simulation<3> sim(grit::testing::read_case_text(text, "plate_shifted"), grit::testing::in_memory());
+        ADD_FAILURE() << "a mesh not symmetric about the plane was taken";
+    } catch (const grit::core::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("mesh 'plate'"), std::string::npos) << what;
+        EXPECT_NE(what.find("not symmetric about the plane x = 0"), std::string::npos) << what;
+        EXPECT_NE(what.find("no mirror image"), std::string::npos) << what;
+    }
+    std::filesystem::remove(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl");
 }

@@ -88,6 +88,11 @@ public:
             position[ghosts_[k]] += transforms_[k].shift;
     }
 
+    /// Owner to ghost for the set's positions alone (mirrored and shifted).
+    void forward_positions(Vec* position) const {
+        for (std::size_t k = 0; k < size(); ++k) position[ghosts_[k]] = transforms_[k].position(position[owners_[k]]);
+    }
+
     /// Owner to ghost for one array: scalars copied, vectors as directions (mirrored, not shifted).
     template <class T>
     void forward(T* values) const {

@@ -93,7 +93,7 @@ void read_periodic(CaseSpec& c, const Section& domain, const std::optional<std::
 }
 
 /// domain.symmetry = ["x"], or jet.symmetric: the plane x = 0 is a symmetry plane (modules/symmetry_plane).
-/// Refuses what the images do not support, each with its reason: a periodic x axis, ISPH, mesh walls.
+/// Refuses what the images do not support, each with its reason: a periodic x axis, thin walls.
 void read_symmetry(CaseSpec& c, const Section& domain) {
     if (domain.has("symmetry")) {
         const auto axes = read_axes(domain, "symmetry", c.dimension);
@@ -111,16 +111,12 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
                                      "at once (the mirror images are made for the plane x = 0 alone, not for its "
                                      "periodic copies); lay the whole period, or make another axis periodic",
                                      key, c.periodic_key));
-    if (c.fluid_solver == "isph")
-        throw InputError(fmt::format("key '{}': the symmetry plane supports fluid.solver = \"wcsph\" only (the pressure "
-                                     "solve would need each mirror image's row to copy its source's pressure); lay "
-                                     "the whole set-up, or use wcsph",
+    if (c.has_thin_walls())
+        throw InputError(fmt::format("key '{}': the symmetry plane does not take thin walls ([[wall]] thin: each list "
+                                     "build reads every fluid particle's side, mirror images' too, from the sheet, "
+                                     "so the sheet must be whole, but its wall particles are laid from the whole "
+                                     "sheet, x < 0 included); lay the whole set-up instead",
                                      key));
-    if (!c.meshes.empty() || c.has_thin_walls())
-        throw InputError(fmt::format("key '{}': the symmetry plane does not mirror mesh walls ({}: a mesh spans both "
-                                     "sides of the plane, and neither its wear nor a thin wall's sides are mirrored "
-                                     "across x = 0); lay the whole set-up instead",
-                                     key, !c.meshes.empty() ? c.meshes.front().key : "[[wall]] thin"));
     if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
         throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
                                      "is run)", fmt::join(c.domain_max, ", "), key));

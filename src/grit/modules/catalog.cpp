@@ -96,8 +96,9 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
     table.push_back(plain<Dim, AbrasiveFeedModule>("abrasive_feed", after, [](const Spec& s) {
         return s.has_grains() && s.abrasive.enabled;
     }, {"grains"}));
+    // Also without SPH particles: the grains that straddle the plane are its to sort.
     table.push_back(plain<Dim, SymmetryPlaneModule>("symmetry_plane", after, [](const Spec& s) {
-        return s.has_sph() && s.symmetry_plane;
+        return s.symmetry_plane;
     }, particle_forces));
     table.push_back(plain<Dim, ProbesModule>("probes", after, [](const Spec& s) {
         const auto* probes = s.module_spec<ProbesSpec>(ProbesSpec::key);

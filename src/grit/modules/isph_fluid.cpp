@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include "grit/domain/particle_id.hpp"
+#include "grit/io/hdf5_file.hpp"
 #include "grit/modules/coupling.hpp"
 #include "grit/parallel/parallel.hpp"
 
@@ -154,6 +155,8 @@ void IsphModule<Dim>::project() {
             auto& vs = v_star_[static_cast<std::size_t>(i)];
             vs = ph[i] == fluid_phase ? v[i] + a[i] * dt : ph[i] == wall_phase ? v[i] + g_dt : v[i];
         });
+        // A mirror image's v* is its source's, mirrored (its own sums end in the images).
+        state_.ghosts.forward(v_star_.data());
     }
     const auto& nl = state_.neighbors.list();
     const auto* L = correction_.empty() ? nullptr : correction_.data();
@@ -163,7 +166,7 @@ void IsphModule<Dim>::project() {
     // sloshing tank) blew the tank up within 7 ms, the invariance (~ 1/tau^2) on it within 5 ms
     // (docs/theory.md).
     last_ = projection_.solve(ps, nl, setup_.kernel, projection_settings_, v_star_.data(), L, state_.clock.dt,
-                              std::max(state_.clock.dt, relaxation_dt_), surface.data(), porosity());
+                              std::max(state_.clock.dt, relaxation_dt_), surface.data(), porosity(), &state_.ghosts);
     ++solves_;
     iterations_total_ += last_.iterations;
     if (last_.restarted) ++restarts_;
@@ -229,6 +232,10 @@ void IsphModule<Dim>::integrate() {
         if (box.any()) x[i] = box.wrap(x[i]);
         v[i] = v_half[i] = v_new;
     });
+    // The shift reads the moved positions of its neighbours, mirror images too.
+    state_.ghosts.forward_positions(x);
+    state_.ghosts.forward(v);
+    state_.ghosts.forward(v_half);
     if (shifting_.coefficient > 0.0)
         sph::shift_particles(ps, state_.neighbors.list(), setup_.kernel, shifting_, dt,
                              ps.fields().template get<std::int32_t>("free_surface").data(), shift_);
@@ -283,6 +290,29 @@ double IsphModule<Dim>::stable_time_step() const {
     // grain that stalled at 0.25 v_t; that stall was the walls' doubled support (IsphModule::project).
     relaxation_dt_ = dt;
     return dt;
+}
+
+template <int Dim>
+void IsphModule<Dim>::save(io::Hdf5Group& group) const {
+    group.write("solves", static_cast<std::int64_t>(solves_));
+    group.write("restarts", static_cast<std::int64_t>(restarts_));
+    group.write("iterations_total", iterations_total_);
+    group.write("last_iterations", static_cast<std::int64_t>(last_.iterations));
+    group.write("last_residual", last_.residual);
+    group.write("last_surface_particles", static_cast<std::int64_t>(last_.surface_particles));
+    group.write("relaxation_dt", relaxation_dt_);
+}
+
+template <int Dim>
+void IsphModule<Dim>::load(const io::Hdf5Group& group) {
+    if (!group.has_attribute("solves")) return;  // written before grit saved them: the means start afresh
+    solves_ = static_cast<long>(group.read_int("solves"));
+    restarts_ = static_cast<long>(group.read_int("restarts"));
+    iterations_total_ = group.read_double("iterations_total");
+    last_.iterations = static_cast<int>(group.read_int("last_iterations"));
+    last_.residual = group.read_double("last_residual");
+    last_.surface_particles = static_cast<Index>(group.read_int("last_surface_particles"));
+    relaxation_dt_ = group.read_double("relaxation_dt");
 }
 
 template <int Dim>

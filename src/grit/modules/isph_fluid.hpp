@@ -27,6 +27,10 @@ class IsphModule final : public sim::Module<Dim> {
     double stable_time_step() const override;
     std::string check_health() const override;
     void output_values(std::vector<sim::OutputValue>& out) const override;
+    /// The solve counters behind the summary's means, the last solve's figures and the relaxation time
+    /// of the next projection (a step cut for an output time leaves it longer than the step).
+    void save(io::Hdf5Group& group) const override;
+    void load(const io::Hdf5Group& group) override;
 
   private:
     void update_neighbors(bool force);

@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "grit/core/error.hpp"
+#include "grit/dem/plane_wall.hpp"
 #include "grit/io/vtu_writer.hpp"
+#include "grit/mesh/mirror_partners.hpp"
 #include "grit/modules/grains.hpp"
 #include "grit/wear/wear_models.hpp"
 
@@ -34,7 +36,68 @@ MeshWearModule<Dim>::MeshWearModule(sim::State<Dim>& state, const sim::RunSetup<
         }
         first_triangle_.push_back(triangles);
         map_ = wear::WearMap(triangles);
+        if (setup.spec.symmetry_plane) {
+            lone_ = wear::WearMap(triangles);
+            pair_mirror_images();
+        }
     }
+}
+
+template <int Dim>
+void MeshWearModule<Dim>::pair_mirror_images() {
+    if constexpr (Dim == 3) {
+        const auto& meshes = setup_.spec.meshes;
+        const std::string& plane = setup_.spec.symmetry_key;
+        for (const auto& m : meshes) {
+            // The twin of a mesh moving at v turns at -v_x; one turning about an axis must turn about x (an
+            // axial vector mirrors to (w_x, -w_y, -w_z)) through the plane.
+            const bool turns = !m.angular_velocity.empty() &&
+                               (m.angular_velocity[0] != 0.0 || m.angular_velocity[1] != 0.0 || m.angular_velocity[2] != 0.0);
+            const bool symmetric_motion =
+                (m.velocity.empty() || m.velocity[0] == 0.0) &&
+                (!turns || (m.angular_velocity[1] == 0.0 && m.angular_velocity[2] == 0.0 &&
+                             (m.centre.empty() || m.centre[0] == 0.0)));
+            if (!symmetric_motion)
+                throw core::InputError(fmt::format(
+                    "key '{}': mesh '{}' moves across the symmetry plane ({}: its mirror image would move "
+                    "otherwise); with a symmetry plane a mesh may move along y and z and turn about an x axis "
+                    "through x = 0 only",
+                    m.key, m.name, plane));
+        }
+        const auto& corners = state_.grains->meshes()->corners();
+        double extent = 0.0;
+        for (const auto& t : corners)
+            for (const auto& c : t)
+                for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(c[k]));
+        // STL corners are single precision: 1e-6 of the meshes' size is far above their mirror's round-off
+        // and far below any feature a mesh resolves.
+        const double tolerance = 1e-6 * extent;
+        mirror_ = mesh::mirror_partners(corners, 0, tolerance);
+        for (std::size_t t = 0; t < corners.size(); ++t) {
+            if (mirror_[t] >= 0) continue;
+            const auto& c = corners[t];
+            if (c[0][0] >= -tolerance && c[1][0] >= -tolerance && c[2][0] >= -tolerance) continue;
+            const auto [m, local] = state_.grains->meshes()->locate(static_cast<std::int32_t>(t));
+            const auto centre = (c[0] + c[1] + c[2]) * (1.0 / 3.0);
+            throw core::InputError(fmt::format(
+                "key '{}': mesh '{}' ({}) is not symmetric about the plane x = 0 of {}: its triangle {} at "
+                "({:.6g}, {:.6g}, {:.6g}) m has no mirror image in the meshes; give the meshes whole and "
+                "symmetric, or only their x >= 0 part",
+                meshes[m].key, meshes[m].name, meshes[m].file.string(), plane, local, centre[0], centre[1],
+                centre[2]));
+        }
+    }
+}
+
+template <int Dim>
+wear::WearMap MeshWearModule<Dim>::wear_map() const {
+    if (mirror_.empty()) return map_;
+    wear::WearMap whole = lone_;
+    for (std::size_t t = 0; t < map_.size(); ++t) {
+        whole.add_from(map_, t, t);
+        if (mirror_[t] >= 0) whole.add_from(map_, static_cast<std::size_t>(mirror_[t]), t);
+    }
+    return whole;
 }
 
 template <int Dim>
@@ -51,7 +114,12 @@ void MeshWearModule<Dim>::book() {
         const auto& grains = system.grains();
         const double time = state_.clock.time + state_.clock.dt, dt = state_.clock.dt;
         const auto& meshes = setup_.spec.meshes;
+        const auto& fields = grains.fields();
+        const std::int32_t* straddling =
+            mirror_.empty() ? nullptr : fields.template get<std::int32_t>(dem::straddling_field).data();
         for (Index i = 0; i < grains.size(); ++i) {
+            // A grain with a mirror twin books into map_, whose triangles count their mirror images' too.
+            wear::WearMap& map = straddling && straddling[i] > 0 ? lone_ : map_;
             const dem::MeshContact* contacts = walls.contacts_of(i);
             for (int c = 0; c < walls.contact_count(i); ++c) {
                 const dem::MeshContact& k = contacts[c];
@@ -66,15 +134,15 @@ void MeshWearModule<Dim>::book() {
                 if (k.fresh) {
                     state_.impacts.add({time, grains.id()[i], spec.name, speed, angle,
                                         core::to_array3(grains.position()[i]), grains.collisions()[i]});
-                    map_.add_impact(t, angle, speed);
-                    map_.add_mass(t,
+                    map.add_impact(t, angle, speed);
+                    map.add_mass(t,
                                   spec.wear_material.density *
                                       wear::impact_volume(spec.wear_model, spec.wear_material, grain, speed, radians));
                 }
                 // LIGGGHTS' form counts while the grain closes in on the wall.
                 if (spec.wear_model == wear::WearModel::finnie_liggghts &&
                     core::dot(k.relative_velocity, k.normal) > 0.0)
-                    map_.add_mass(t, wear::liggghts_mass_rate(spec.wear_material, speed, k.force, radians) * dt);
+                    map.add_mass(t, wear::liggghts_mass_rate(spec.wear_material, speed, k.force, radians) * dt);
             }
         }
     }
@@ -82,11 +150,12 @@ void MeshWearModule<Dim>::book() {
 
 template <int Dim>
 void MeshWearModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
-    out.push_back(sim::OutputValue::real("wear_mass_total", map_.total_mass(0, map_.size()), domain::Combine::sum));
+    const wear::WearMap map = wear_map();
+    out.push_back(sim::OutputValue::real("wear_mass_total", map.total_mass(0, map.size()), domain::Combine::sum));
     const auto& meshes = setup_.spec.meshes;
     for (std::size_t m = 0; m < meshes.size(); ++m)
         out.push_back(sim::OutputValue::real("wear_mass_" + meshes[m].name,
-                                             map_.total_mass(first_triangle_[m], first_triangle_[m + 1]), domain::Combine::sum));
+                                             map.total_mass(first_triangle_[m], first_triangle_[m + 1]), domain::Combine::sum));
 }
 
 template <int Dim>
@@ -118,14 +187,15 @@ void MeshWearModule<Dim>::write_output(const sim::OutputPlace& place) {
         auto mass = io::PointArray::reals("wear_mass", 1), depth = io::PointArray::reals("wear_depth", 1),
              count = io::PointArray::integers("impact_count", 1), angle = io::PointArray::reals("mean_impact_angle", 1),
              speed = io::PointArray::reals("mean_impact_speed", 1), which = io::PointArray::integers("mesh", 1);
+        const wear::WearMap map = wear_map();
         for (std::size_t t = 0; t < corners.size(); ++t) {
             const auto [m, local] = walls.locate(static_cast<std::int32_t>(t));
             const double rho = meshes[m].wear_material.density;
-            mass.real.push_back(map_.mass(t));
-            depth.real.push_back(std::isfinite(rho) ? map_.mass(t) / (rho * meshes[m].mesh->area(local)) : 0.0);
-            count.integer.push_back(static_cast<std::int32_t>(map_.impacts(t)));
-            angle.real.push_back(map_.mean_angle(t));
-            speed.real.push_back(map_.mean_speed(t));
+            mass.real.push_back(map.mass(t));
+            depth.real.push_back(std::isfinite(rho) ? map.mass(t) / (rho * meshes[m].mesh->area(local)) : 0.0);
+            count.integer.push_back(static_cast<std::int32_t>(map.impacts(t)));
+            angle.real.push_back(map.mean_angle(t));
+            speed.real.push_back(map.mean_speed(t));
             which.integer.push_back(static_cast<std::int32_t>(m));
         }
         s.cell_arrays = {mass, depth, count, angle, speed, which};
@@ -144,6 +214,10 @@ void MeshWearModule<Dim>::save(io::Hdf5Group& group) const {
     group.write("snapshot_index", static_cast<std::int64_t>(snapshot_index_));
     auto map = group.create_group("wear_map");
     map_.save(map);
+    if (!mirror_.empty()) {
+        auto lone = group.create_group("wear_map_straddling");
+        lone_.save(lone);
+    }
     io::save_pvd_entries(group, "pvd", pvd_ ? pvd_->entries() : restored_pvd_);
 }
 
@@ -151,6 +225,7 @@ template <int Dim>
 void MeshWearModule<Dim>::load(const io::Hdf5Group& group) {
     snapshot_index_ = static_cast<long>(group.read_int("snapshot_index"));
     map_.load(group.open_group("wear_map"));
+    if (!mirror_.empty()) lone_.load(group.open_group("wear_map_straddling"));
     restored_pvd_ = io::load_pvd_entries(group, "pvd");
 }
 

@@ -19,7 +19,7 @@ using Particles = particles::SphParticles<Dim>;
 
 template <int Dim>
 SymmetryPlaneModule<Dim>::SymmetryPlaneModule(sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
-    : state_(state) {
+    : state_(state), has_particles_(setup.spec.has_sph()) {
     const double support = std::visit([](const auto& k) { return k.support(); }, setup.kernel);
     const double skin = setup.spec.neighbor_skin * setup.smoothing_length;
     // A particle reads an image up to a support away, and that image's own sums (a correction matrix,
@@ -50,6 +50,10 @@ void SymmetryPlaneModule<Dim>::install(sim::Pipeline& pipeline) {
     using sim::Hook;
     // After the inlets and outlets (a removed source takes its image along, a particle that crossed is
     // reflected before the lists see it).
+    if (!has_particles_) {  // grains only: the straddlers
+        pipeline.add(Hook::boundaries, "symmetry_grains", [this] { sort_grains(); });
+        return;
+    }
     pipeline.add(Hook::boundaries, "symmetry_refresh", [this] {
         refresh();
         sort_grains();  // after the feeds
@@ -100,14 +104,14 @@ void SymmetryPlaneModule<Dim>::find_sources() {
             near.add(id[i], i);
         }
     }
-    halo_.clear();
+    state_.ghosts.clear();
     std::vector<Index> orphans;
     for (const Index image : images) {
         const Index source = near.find(Particles<Dim>::image_source(id[image]));
         if (source < 0)
             orphans.push_back(image);
         else
-            halo_.add(source, image, domain::GhostTransform<Dim>::mirror(axis));
+            state_.ghosts.add(source, image, domain::GhostTransform<Dim>::mirror(axis));
     }
     if (!orphans.empty()) {  // their sources left (outlets, erosion): the images go too
         std::vector<Index> keep;
@@ -141,10 +145,10 @@ void SymmetryPlaneModule<Dim>::refresh() {
             if (x[i][axis] < 0.0 && ph[i] != wall && !ps.is_image(i)) fields.mirror_copy(i, i, axis);
     }
     find_sources();
-    halo_.forward(ps.fields(), ps.position());
+    state_.ghosts.forward(ps.fields(), ps.position());
     domain::ParticleId* id = ps.id();
-    const auto& images = halo_.ghosts();
-    const auto& sources = halo_.owners();
+    const auto& images = state_.ghosts.ghosts();
+    const auto& sources = state_.ghosts.owners();
     for (std::size_t k = 0; k < images.size(); ++k) id[images[k]] = Particles<Dim>::image_id(id[sources[k]]);
 }
 
@@ -179,7 +183,7 @@ template <int Dim>
 void SymmetryPlaneModule<Dim>::hold_image_rates() {
     find_sources();
     const auto* a = state_.particles.acceleration();
-    const auto& images = halo_.ghosts();
+    const auto& images = state_.ghosts.ghosts();
     held_.resize(images.size());
     for (std::size_t k = 0; k < images.size(); ++k) held_[k] = a[images[k]];
 }
@@ -187,13 +191,13 @@ void SymmetryPlaneModule<Dim>::hold_image_rates() {
 template <int Dim>
 void SymmetryPlaneModule<Dim>::return_image_forces() {
     auto& ps = state_.particles;
-    const auto& images = halo_.ghosts();
+    const auto& images = state_.ghosts.ghosts();
     if (sources_generation_ != ps.generation() || held_.size() != images.size())
         throw std::logic_error("symmetry plane: the particle set changed between the sums and the grain forces");
     auto* a = ps.acceleration();
     // What the grains added to each image since the sums (held_ becomes it), back onto the sources.
     for (std::size_t k = 0; k < images.size(); ++k) held_[k] = a[images[k]] - held_[k];
-    halo_.reverse_add(held_.data(), a);
+    state_.ghosts.reverse_add(held_.data(), a);
 }
 
 template class SymmetryPlaneModule<2>;

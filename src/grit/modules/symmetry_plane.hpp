@@ -16,7 +16,6 @@
 
 #include <vector>
 
-#include "grit/domain/halo.hpp"
 #include "grit/sim/module.hpp"
 
 namespace grit::modules {
@@ -44,16 +43,15 @@ private:
     void hold_image_rates();
     /// What grains added to each image's acceleration, mirrored onto its source.
     void return_image_forces();
-    /// Each image with its source (halo_), when the set changed since they were found.
+    /// Each image with its source (state.ghosts), when the set changed since they were found.
     void find_sources();
     /// New grains straddle the plane or not; straddlers a radius off it no longer do; straddlers whose
     /// centre crossed are reflected (their twins crossed the other way).
     void sort_grains();
 
     sim::State<Dim>& state_;
+    bool has_particles_;  ///< SPH particles (else grains only: no images)
     double depth_ = 0.0;  ///< images of the particles closer than this to the plane [m]
-    /// Each image as the mirror ghost of its source: refreshed forward, what grains add returned in reverse.
-    domain::Halo<Dim> halo_;
     std::vector<core::Vec<Dim>> held_;
     std::uint64_t sources_generation_ = ~std::uint64_t{0};
 };

@@ -6,6 +6,7 @@
 
 #include "grit/analysis/erosion_log.hpp"
 #include "grit/dem/dem_system.hpp"
+#include "grit/domain/halo.hpp"
 #include "grit/neighbors/particle_neighbors.hpp"
 #include "grit/particles/sph_particles.hpp"
 #include "grit/wear/impact_log.hpp"
@@ -36,6 +37,10 @@ struct State {
     /// Their neighbour lists (derived data, but kept with the set: several modules read and invalidate
     /// them, and a checkpoint rebuilds them exactly).
     neighbors::ParticleNeighbors<Dim> neighbors;
+    /// The particles' ghosts: which owner each copies and how (a symmetry plane's mirror images, which
+    /// its module finds afresh whenever the set changed). A stage that derives a value the sums read of
+    /// a ghost (the projection's v*, the solved pressure) forwards it from the owner through this.
+    domain::Halo<Dim> ghosts;
     /// The grains with their neighbour lists and tangential contact histories; null without grains.
     std::unique_ptr<dem::DemSystem<Dim>> grains;
     /// First contacts of grains with targets.

@@ -129,7 +129,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                                                 const ProjectionSettings<Dim>& s, const core::Vec<Dim>* v_star,
                                                 const GradientCorrection<Dim>* correction, double dt,
                                                 double relaxation_time, std::int32_t* free_surface,
-                                                const double* porosity) {
+                                                const double* porosity, const domain::Halo<Dim>* ghosts) {
     using Vec = core::Vec<Dim>;
     const Index n = ps.size();
     const auto un = static_cast<std::size_t>(n);
@@ -148,6 +148,15 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     const auto on_surface = [&](Index a) {
         return divergence_r_[static_cast<std::size_t>(a)] < s.free_surface_divergence;
     };
+    // The unknown each particle's pressure is: its own, or for a ghost its owner's (a mirror image's
+    // pressure is its source's). A ghost's own row would read a kernel that the ghosts end in.
+    owner_.resize(un);
+    for (Index a = 0; a < n; ++a) owner_[static_cast<std::size_t>(a)] = a;
+    if (ghosts)
+        for (std::size_t k = 0; k < ghosts->size(); ++k)
+            owner_[static_cast<std::size_t>(ghosts->ghosts()[k])] = ghosts->owners()[k];
+    const auto is_ghost = [&](Index a) { return owner_[static_cast<std::size_t>(a)] != a; };
+    const auto unknown = [&](Index j) { return static_cast<int>(owner_[static_cast<std::size_t>(j)]); };
 
     // Rows in padded storage: row a has room for its diagonal and every listed
     // neighbour.
@@ -167,7 +176,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
     {
         bool surface = false;
         for (Index a = 0; a < n && !surface; ++a) {
-            if (ph[a] != fluid_phase) continue;
+            if (ph[a] != fluid_phase || is_ghost(a)) continue;
             if (pinned < 0) pinned = a;
             surface = on_surface(a);
         }
@@ -206,7 +215,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
             const Vec grad = (correction ? correction[a].apply(xab) : xab) * k.gradient_factor(std::sqrt(r2));
             const double c = s.surface_offset * m[j] / rho[j] * core::dot(normal, grad);
             diagonal -= c;
-            col[count] = static_cast<int>(j);
+            col[count] = unknown(j);
             val[count] = c;
             ++count;
         });
@@ -222,7 +231,10 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
             double diagonal = 0.0, b = 0.0;
             guess_[a] = p[a];
             if (free_surface) free_surface[a] = 0;
-            if (ph[a] == fluid_phase) {
+            if (is_ghost(a)) {
+                diagonal = 1.0;  // keeps its pressure until its owner's is forwarded to it
+                b = p[a];
+            } else if (ph[a] == fluid_phase) {
                 for (Index e = nl.begin(a); e < nl.end(a); ++e) {
                     const Index j = nbr[e];
                     if (!in_projection(ph[j])) continue;
@@ -234,7 +246,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     const double coef =
                         -m[j] * 8.0 / (rho_sum * rho_sum) * r2 * k.gradient_factor(std::sqrt(r2)) / (r2 + eps_h2);
                     diagonal += coef;
-                    col[count] = static_cast<int>(j);
+                    col[count] = unknown(j);
                     val[count] = -coef;
                     ++count;
                 }
@@ -286,7 +298,7 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                     diagonal += w;
                     const double rho_fluid = porosity ? rho[j] / porosity[j] : rho[j];
                     b += rho_fluid * core::dot(s.gravity, xwf) * w;
-                    col[count] = static_cast<int>(j);
+                    col[count] = unknown(j);
                     val[count] = -w;
                     ++count;
                 }
@@ -310,7 +322,6 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
             col[0] = static_cast<int>(a);
             val[0] = diagonal;
             rhs_[a] = b;
-            row_count_[static_cast<std::size_t>(a)] = count;
             // Sorted columns, as Eigen's compressed storage expects (insertion sort:
             // a row is short).
             for (Index c = 1; c < count; ++c) {
@@ -324,6 +335,20 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
                 col[d] = key;
                 val[d] = value;
             }
+            // A particle near a mirror plane reads its own image, and two particles each other's: one
+            // entry per unknown.
+            Index merged = 1;
+            for (Index c = 1; c < count; ++c) {
+                if (col[c] == col[merged - 1]) {
+                    val[merged - 1] += val[c];
+                } else {
+                    col[merged] = col[c];
+                    val[merged] = val[c];
+                    ++merged;
+                }
+            }
+            count = merged;
+            row_count_[static_cast<std::size_t>(a)] = count;
         });
     });
 
@@ -376,12 +401,17 @@ ProjectionResult PressureProjection<Dim>::solve(particles::SphParticles<Dim>& ps
         }
     }
     for (Index a = 0; a < n; ++a)
-        if (ph[a] == fluid_phase && on_surface(a))
+        if (ph[a] == fluid_phase && on_surface(a) && !is_ghost(a))
             ++result.surface_particles;
-    if (result.converged)
+    if (result.converged) {
         parallel::for_each(n, [&](Index a) {
             if (in_projection(ph[a])) p[a] = solution_[a];
         });
+        if (ghosts) {
+            ghosts->forward(p);
+            if (free_surface) ghosts->forward(free_surface);
+        }
+    }
     return result;
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "grit/core/vec.hpp"
+#include "grit/domain/halo.hpp"
 #include "grit/neighbors/neighbor_list.hpp"
 #include "grit/neighbors/periodic_box.hpp"
 #include "grit/particles/sph_particles.hpp"
@@ -94,10 +95,14 @@ class PressureProjection {
     /// `porosity` (grains coupled to the fluid, else nullptr): the particles' density is then the
     /// locally averaged one, rho_bar = eps rho0 (eq. 21); the density invariance aims the summation
     /// density at eps_a rho0 and the wall rows take the fluid's own density rho_bar / eps.
+    /// `ghosts` (a symmetry plane's mirror images, else nullptr): a ghost's pressure is its owner's, so
+    /// a row that reads a ghost reads the owner's unknown, the ghosts' own rows keep their pressure, and
+    /// the solved pressure is forwarded to them (v_star must hold the ghosts' forwarded values).
     ProjectionResult solve(particles::SphParticles<Dim>& particles, const neighbors::NeighborList<Dim>& neighbors,
                            const Kernel<Dim>& kernel, const ProjectionSettings<Dim>& settings,
                            const core::Vec<Dim>* v_star, const GradientCorrection<Dim>* correction, double dt,
-                           double relaxation_time, std::int32_t* free_surface, const double* porosity = nullptr);
+                           double relaxation_time, std::int32_t* free_surface, const double* porosity = nullptr,
+                           const domain::Halo<Dim>* ghosts = nullptr);
 
     /// The system of the last solve (tests).
     const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& matrix() const { return matrix_; }
@@ -106,6 +111,7 @@ class PressureProjection {
     Eigen::SparseMatrix<double, Eigen::RowMajor, int> matrix_;
     Eigen::VectorXd rhs_, guess_, solution_;
     std::vector<Index> row_count_, row_start_;
+    std::vector<Index> owner_;  ///< per particle: itself, or a ghost's owner (the unknown it stands for)
     std::vector<int> padded_columns_;
     std::vector<double> padded_values_;
     std::vector<double> divergence_r_, divergence_v_, divergence_v0_, summation_density_;

@@ -32,6 +32,13 @@ class WearMap {
     double mean_speed(std::size_t t) const noexcept {
         return impacts_[t] ? speed_sum_[t] / static_cast<double>(impacts_[t]) : 0.0;
     }
+    /// Adds what `other` booked on its triangle `from` to this map's triangle `to`.
+    void add_from(const WearMap& other, std::size_t from, std::size_t to) {
+        mass_[to] += other.mass_[from];
+        impacts_[to] += other.impacts_[from];
+        angle_sum_[to] += other.angle_sum_[from];
+        speed_sum_[to] += other.speed_sum_[from];
+    }
     /// Removed mass over triangles [first, last).
     double total_mass(std::size_t first, std::size_t last) const {
         double m = 0.0;

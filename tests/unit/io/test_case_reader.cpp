@@ -938,16 +938,17 @@ TEST_F(CaseReaderTest, IntegersBeyondTwoToThe53AreNumbers) {
     expect_error(minimal_2d, {"domain.max=[9007199254740993, -9007199254740993]"}, {"domain.max"});
 }
 
-// What the symmetry plane refuses, each with its reason: a periodic x, ISPH, mesh walls.
+// What the symmetry plane refuses, each with its reason: a periodic x, thin walls. ISPH and mesh walls
+// are taken (tests/validation/test_isph.cpp, tests/verification/test_symmetry_plane.cpp).
 TEST_F(CaseReaderTest, SymmetryPlaneRefusalsNameTheirReason) {
     EXPECT_TRUE(read_ok(minimal_2d, {"domain.symmetry=[\"x\"]"}).symmetry_plane);
     expect_error(minimal_2d, {"domain.symmetry=[\"x\"]", "domain.periodic=[\"x\"]"},
                  {"'domain.symmetry'", "'domain.periodic'", "periodic and mirrored", "periodic copies"});
-    expect_error(minimal_2d, {"domain.symmetry=[\"x\"]", "fluid.solver=isph"},
-                 {"'domain.symmetry'", "\"wcsph\" only", "pressure solve"});
-    expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases" / "wear_angle_sweep_3d" / "case.toml", {"domain.symmetry=[\"x\"]"},
-                      {"'domain.symmetry'", "does not mirror mesh walls", "neither its wear"});
+    EXPECT_TRUE(read_ok(minimal_2d, {"domain.symmetry=[\"x\"]", "fluid.solver=isph"}).symmetry_plane);
+    EXPECT_TRUE(read_case(fs::path(GRIT_SOURCE_DIR) / "cases" / "wear_angle_sweep_3d" / "case.toml",
+                          {"domain.symmetry=[\"x\"]"})
+                    .symmetry_plane);
     expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases" / "jet_on_thin_plate_3d" / "case.toml",
                       {"domain.symmetry=[\"x\"]", "wall[0].thin=true"},
-                      {"'domain.symmetry'", "does not mirror mesh walls", "[[wall]] thin"});
+                      {"'domain.symmetry'", "does not take thin walls", "[[wall]] thin", "mirror images"});
 }
