@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "grit/core/disjoint_sets.hpp"
+#include "grit/analysis/fragments.hpp"
 #include "grit/material/solid_model.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "grit/sph/correction_matrix.hpp"
@@ -203,7 +203,6 @@ void SolidModule<Dim>::remove_failed() {
     const double* damage = ps.fields().template get<double>("damage").data();
     const std::int32_t* ph = ps.phase();
     const std::int32_t* mat = ps.material();
-    const auto* x = ps.position();
     const auto solid = static_cast<std::int32_t>(Phase::solid);
     const Index n = ps.size();
     std::vector<std::uint8_t> gone(static_cast<std::size_t>(n), 0);
@@ -216,40 +215,16 @@ void SolidModule<Dim>::remove_failed() {
     });
     for (Index i = 0; i < n && !fractured_rock; ++i) fractured_rock = gone[static_cast<std::size_t>(i)] == 2;
     if (fractured_rock) {
-        const double reach2 = 2.25 * setup_.spacing * setup_.spacing;
+        // Fragments as exchangeable labels (analysis/fragments): the clusters of fractured rock, and those a
+        // member anchors to intact rock; a fractured particle goes when its fragment is not anchored.
+        const double link = 1.5 * setup_.spacing;
         const auto& box = setup_.periodic_box;  // links across a periodic face by the nearest image
-        const auto& list = state_.neighbors.list();
-        const Index* nb = list.indices();
-        // A path from a fractured particle to intact rock runs through fractured particles and ends in
-        // one fractured-intact link: the clusters need only the links between fractured particles, and
-        // a cluster is anchored when a member touches intact rock (the answer of clustering every solid
-        // particle, at the cost of the fractured ones only).
-        auto fractured = [&](Index i) { return ph[i] == solid && damage[i] >= 1.0; };
-        std::vector<std::uint8_t> touches_intact(static_cast<std::size_t>(n), 0);
-        parallel::for_each(n, [&](Index i) {
-            if (!fractured(i)) return;
-            for (Index k = list.begin(i); k < list.end(i); ++k) {
-                const Index j = nb[k];
-                if (ph[j] == solid && damage[j] < 1.0 && core::norm2(box.nearest_image(x[j] - x[i])) <= reach2) {
-                    touches_intact[static_cast<std::size_t>(i)] = 1;
-                    return;
-                }
-            }
-        });
-        core::DisjointSets clusters(n);
-        for (Index i = 0; i < n; ++i) {
-            if (!fractured(i)) continue;
-            for (Index k = list.begin(i); k < list.end(i); ++k) {
-                const Index j = nb[k];
-                if (j > i && fractured(j) && core::norm2(box.nearest_image(x[j] - x[i])) <= reach2) clusters.unite(i, j);
-            }
-        }
-        std::vector<std::uint8_t> anchored(static_cast<std::size_t>(n), 0);
-        for (Index i = 0; i < n; ++i)
-            if (touches_intact[static_cast<std::size_t>(i)]) anchored[static_cast<std::size_t>(clusters.find(i))] = 1;
+        const auto labels = analysis::fragment_labels(ps, damage, link, n, nullptr, box);
+        const auto anchored = analysis::anchored_fragments(ps, damage, labels, state_.neighbors.list(), link, n, box);
         for (Index i = 0; i < n; ++i)
             if (gone[static_cast<std::size_t>(i)] == 2)
-                gone[static_cast<std::size_t>(i)] = anchored[static_cast<std::size_t>(clusters.find(i))] ? 0 : 1;
+                gone[static_cast<std::size_t>(i)] =
+                    std::binary_search(anchored.begin(), anchored.end(), labels[static_cast<std::size_t>(i)]) ? 0 : 1;
     }
     const Index failed = parallel::sum(n, Index{0}, [&](Index i) { return Index{gone[static_cast<std::size_t>(i)]}; });
     if (failed == 0) return;

@@ -1,7 +1,8 @@
 // Analyses as a local pass and a combine: the crater's bins and the probes' samples of a set split into two
 // sub-domains, combined as domain::Comm combines them (bins and fronts by their maximum, NaN left out;
 // point probes' sums by adding), give the whole set's crater and probe values; the crack labels, joined
-// through ghosts whose labels are exchanged until none changes, give the whole set's cracks.
+// through ghosts whose labels are exchanged until none changes, give the whole set's cracks, and the
+// fragment labels with the anchored labels of each sub-domain united remove what the whole set removes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 
 #include "grit/analysis/cracks.hpp"
 #include "grit/analysis/crater.hpp"
+#include "grit/analysis/fragments.hpp"
 #include "grit/analysis/probes.hpp"
 
 namespace {
@@ -243,6 +245,108 @@ TEST(SplitAnalyses, CrackLabelsExchangedThroughGhostsGiveTheWholeSetsCracks) {
     grit::analysis::count_cracks(sizes, options, combined);
     EXPECT_EQ(combined.crack_count, reference.crack_count);
     EXPECT_EQ(combined.largest_crack, reference.largest_crack);
+}
+
+// Neighbour lists of every pair closer than `radius`, by brute force (the sets here are small).
+grit::neighbors::NeighborList<2> all_pairs(const grit::particles::SphParticles<2>& ps, double radius) {
+    std::vector<Index> offsets{0}, indices;
+    for (Index i = 0; i < ps.size(); ++i) {
+        for (Index j = 0; j < ps.size(); ++j)
+            if (j != i && grit::core::norm2(ps.position()[i] - ps.position()[j]) < radius * radius) indices.push_back(j);
+        offsets.push_back(static_cast<Index>(indices.size()));
+    }
+    grit::neighbors::NeighborList<2> list;
+    list.assign(offsets, indices, std::vector<grit::core::Vec<2>>(ps.position(), ps.position() + ps.size()));
+    return list;
+}
+
+TEST(SplitAnalyses, FragmentLabelsOfTwoSubDomainsRemoveWhatTheWholeSetRemoves) {
+    // Intact rock in the bottom 5 rows of a 40 x 30 lattice, water above it, and in the water fractured
+    // rock: a snake anchored on the rock at its right end that crosses the cut at x = 19.5 dx four
+    // times (the anchor must travel through several exchanges), an island across the cut that touches
+    // nothing, and scattered fractured particles (10 %), some on the rock.
+    constexpr double h = 1e-3;
+    grit::particles::SphParticles<2> whole;
+    std::vector<double> damage;
+    std::mt19937 rng(11);
+    for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 40; ++i) {
+            const Index a = whole.append(1);
+            whole.position()[a] = {{i * h, j * h}};
+            const bool rock = j < 5;
+            const bool snake = (i == 35 && j >= 5 && j <= 25) || (j == 25 && i >= 8 && i <= 35) ||
+                               (i == 8 && j >= 20 && j <= 25) || (j == 20 && i >= 8 && i <= 30);
+            const bool island = j == 12 && i >= 12 && i <= 28;
+            const bool scattered = std::uniform_real_distribution<double>(0.0, 1.0)(rng) < 0.1;
+            const bool solid = rock || snake || island || scattered;
+            whole.phase()[a] = static_cast<std::int32_t>(solid ? Phase::solid : Phase::fluid);
+            damage.push_back(!solid ? 0.0 : rock && !scattered ? 0.1 : 1.0);
+        }
+    const double link = 1.5 * h;
+    const auto labels = grit::analysis::fragment_labels<2>(whole, damage.data(), link, whole.size());
+    const auto anchored =
+        grit::analysis::anchored_fragments<2>(whole, damage.data(), labels, all_pairs(whole, 2.5 * h), link, whole.size());
+    auto removed = [&](const std::vector<grit::domain::ParticleId>& label, const std::vector<grit::domain::ParticleId>& a,
+                       Index i) { return label[static_cast<std::size_t>(i)] >= 0 &&
+                                         !std::binary_search(a.begin(), a.end(), label[static_cast<std::size_t>(i)]); };
+    Index gone = 0, kept = 0;
+    for (Index i = 0; i < whole.size(); ++i)
+        if (labels[static_cast<std::size_t>(i)] >= 0) ++(removed(labels, anchored, i) ? gone : kept);
+    ASSERT_GT(gone, 17);  // the island at least
+    ASSERT_GT(kept, 50);  // the snake at least
+
+    const double cut = 19.5 * h;
+    std::array<SubDomain, 2> sub;
+    std::array<std::vector<Index>, 2> from;
+    for (int side = 0; side < 2; ++side) {
+        auto mine = [&](Index i) { return (whole.position()[i][0] < cut) == (side == 0); };
+        for (Index i = 0; i < whole.size(); ++i)
+            if (mine(i)) from[side].push_back(i);
+        sub[side].owned = static_cast<Index>(from[side].size());
+        for (Index i = 0; i < whole.size(); ++i)
+            if (!mine(i) && std::abs(whole.position()[i][0] - cut) <= link) from[side].push_back(i);
+        sub[side].ps = whole;
+        sub[side].ps.gather(from[side]);
+        for (const Index i : from[side]) sub[side].damage.push_back(damage[static_cast<std::size_t>(i)]);
+    }
+    for (int side = 0; side < 2; ++side) {
+        std::map<Index, Index> there;
+        for (std::size_t k = 0; k < from[1 - side].size(); ++k) there[from[1 - side][k]] = static_cast<Index>(k);
+        for (std::size_t k = static_cast<std::size_t>(sub[side].owned); k < from[side].size(); ++k)
+            sub[side].owner.push_back(there.at(from[side][k]));
+    }
+    std::array<std::vector<grit::domain::ParticleId>, 2> local, ghost_labels;
+    int rounds = 0;
+    for (bool changed = true; changed; ++rounds) {
+        ASSERT_LT(rounds, 20);
+        for (int side = 0; side < 2; ++side)
+            local[side] = grit::analysis::fragment_labels<2>(sub[side].ps, sub[side].damage.data(), link, sub[side].owned,
+                                                             rounds == 0 ? nullptr : ghost_labels[side].data());
+        changed = false;
+        for (int side = 0; side < 2; ++side) {
+            std::vector<grit::domain::ParticleId> fresh;
+            for (const Index o : sub[side].owner) fresh.push_back(local[1 - side][static_cast<std::size_t>(o)]);
+            changed |= fresh != ghost_labels[side];
+            ghost_labels[side] = fresh;
+        }
+    }
+    EXPECT_GT(rounds, 2);
+    // Each sub-domain's anchored labels, united.
+    std::vector<grit::domain::ParticleId> united;
+    for (int side = 0; side < 2; ++side) {
+        const auto mine = grit::analysis::anchored_fragments<2>(sub[side].ps, sub[side].damage.data(), local[side],
+                                                                all_pairs(sub[side].ps, 2.5 * h), link, sub[side].owned);
+        united.insert(united.end(), mine.begin(), mine.end());
+    }
+    std::sort(united.begin(), united.end());
+    united.erase(std::unique(united.begin(), united.end()), united.end());
+    EXPECT_EQ(united, anchored);
+    for (int side = 0; side < 2; ++side)
+        for (Index k = 0; k < sub[side].owned; ++k) {
+            const Index i = from[side][static_cast<std::size_t>(k)];
+            EXPECT_EQ(local[side][static_cast<std::size_t>(k)], labels[static_cast<std::size_t>(i)]) << "particle " << i;
+            EXPECT_EQ(removed(local[side], united, k), removed(labels, anchored, i)) << "particle " << i;
+        }
 }
 
 }  // namespace
