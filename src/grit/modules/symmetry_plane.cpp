@@ -9,6 +9,7 @@
 #include "grit/core/error.hpp"
 #include "grit/dem/plane_wall.hpp"
 #include "grit/domain/id_index.hpp"
+#include "grit/sim/damage_reach.hpp"
 
 namespace grit::modules {
 
@@ -27,9 +28,8 @@ SymmetryPlaneModule<Dim>::SymmetryPlaneModule(sim::State<Dim>& state, const sim:
     // skin for each, as both move by up to half a skin between builds.
     depth_ = 2.0 * (support + skin);
     // A non-local damage average (sph/nonlocal_damage.hpp) reads images up to its length away.
-    for (const auto& m : setup.spec.materials)
-        if (const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model); jc && jc->nonlocal_damage())
-            depth_ = std::max(depth_, jc->damage_length + skin);
+    if (const double damage = sim::longest_damage_reach(setup.spec).length; damage > 0.0)
+        depth_ = std::max(depth_, damage + skin);
     state.neighbors.before_build([this](particles::SphParticles<Dim>& ps) { make_images(ps); });
     sort_grains();  // grains laid at the start
     const auto& ps = state_.particles;

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "grit/core/error.hpp"
+#include "grit/sim/damage_reach.hpp"
 #include "grit/sim/module.hpp"
 
 namespace grit::sim {
@@ -22,12 +23,10 @@ void check_periodic_lengths(const RunSetup<Dim>& setup) {
     const double support = std::visit([](const auto& k) { return k.support(); }, setup.kernel);
     double reach = support;
     std::string what = "the kernel support";
-    for (const auto& m : spec.materials)
-        if (const auto* jc = std::get_if<material::JohnsonCook>(&m.solid_model);
-            jc && jc->nonlocal_damage() && jc->damage_length > reach) {
-            reach = jc->damage_length;
-            what = "the non-local damage length of material '" + m.name + "'";
-        }
+    if (const DamageReach damage = longest_damage_reach(spec); damage.length > reach) {
+        reach = damage.length;
+        what = "the non-local damage length of material '" + damage.material + "'";
+    }
     const char* axis = "xyz";
     for (int k = 0; k < Dim; ++k) {
         if (!setup.periodic_box.periodic[k]) continue;
