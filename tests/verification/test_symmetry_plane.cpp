@@ -242,3 +242,48 @@ TEST(SymmetryPlane, MeshNotSymmetricAboutThePlaneIsRefused) {
     }
     std::filesystem::remove(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl");
 }
+
+// An [[inlet]] whose section crosses the plane emits its x > 0 half: the water jet on a rigid wall
+// (jet_on_wall_2d, the inlet centred on x = 0) run on its half gives the whole run's stagnation pressure
+// and, halved, its mass and kinetic energy. Before, the whole section emitted into the half and its x < 0
+// particles were reflected onto the others: twice the water, silently.
+TEST(SymmetryPlane, InletAcrossThePlaneEmitsItsHalf) {
+    grit::parallel::set_threads(2);
+    Simulation<2> whole(grit::testing::load_case("jet_on_wall_2d/case.toml"), grit::testing::in_memory());
+    Simulation<2> half(grit::testing::load_case("jet_on_wall_2d/case.toml",
+                                                {"domain.symmetry=[\"x\"]", "wall[0].min=[0.0, -1.5e-4]"}),
+                       grit::testing::in_memory());
+    for (const double t : {1.2e-5, 1.6e-5}) {
+        SCOPED_TRACE(t);
+        whole.advance_to(t);
+        half.advance_to(t);
+        const auto w = values_of(whole), h = values_of(half);
+        EXPECT_GT(w.at("p_stagnation"), 1e7);
+        EXPECT_EQ(2.0 * h.at("mass_in"), w.at("mass_in"));
+        EXPECT_LT(relative(h.at("p_stagnation"), w.at("p_stagnation"), w.at("p_stagnation")), 1e-9);
+        EXPECT_LT(relative(2.0 * h.at("kinetic_energy"), w.at("kinetic_energy"), w.at("kinetic_energy")), 1e-9);
+    }
+}
+
+// An inlet across the plane must be centred on it and aimed along it, and hold an even number of
+// particle columns (an odd one puts a column on the plane).
+TEST(SymmetryPlane, InletAcrossThePlaneMustBeSymmetricAboutIt) {
+    const std::vector<std::string> half = {"domain.symmetry=[\"x\"]", "wall[0].min=[0.0, -1.5e-4]"};
+    auto error_of = [&](std::vector<std::string> overrides) -> std::string {
+        overrides.insert(overrides.begin(), half.begin(), half.end());
+        try {
+            Simulation<2> sim(grit::testing::load_case("jet_on_wall_2d/case.toml", overrides), grit::testing::in_memory());
+        } catch (const grit::core::InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string off = error_of({"inlet[0].position=[2.0e-4, 2.0e-3]"});
+    EXPECT_NE(off.find("key 'inlet[0].position'"), std::string::npos) << off;
+    EXPECT_NE(off.find("centred on the plane x = 0"), std::string::npos) << off;
+    const std::string slanted = error_of({"inlet[0].direction=[0.1, -1.0]"});
+    EXPECT_NE(slanted.find("aimed along it"), std::string::npos) << slanted;
+    const std::string odd = error_of({"inlet[0].diameter=0.95e-3"});
+    EXPECT_NE(odd.find("key 'inlet[0].diameter'"), std::string::npos) << odd;
+    EXPECT_NE(odd.find("19 particle columns"), std::string::npos) << odd;
+}

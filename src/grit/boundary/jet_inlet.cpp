@@ -1,9 +1,12 @@
 // Jet inlet.
 #include "grit/boundary/jet_inlet.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "grit/boundary/section_axes.hpp"
+#include "grit/core/error.hpp"
 
 namespace grit::boundary {
 
@@ -28,6 +31,19 @@ JetInlet<Dim>::JetInlet(const io::InletSpec& spec, std::int32_t index, double sp
                 if (s * s + u * u <= radius * radius) layer_.push_back(axes[0] * s + axes[1] * u);
             }
         }
+    }
+    if (spec.half) {  // a symmetry plane through the centre: the slots at x > 0 (section_axes: the first is x)
+        std::vector<Vec> half;
+        for (const Vec& slot : layer_) {
+            if (std::abs(slot[0]) < 1e-6 * spacing)
+                throw core::InputError(fmt::format(
+                    "key '{}.diameter' = {} m: {} particle columns across the inlet, an odd number, so one stands on "
+                    "the symmetry plane (where its mirror image would be itself); make the diameter an even number "
+                    "of particle spacings",
+                    spec.key, spec.diameter, n));
+            if (slot[0] > 0.0) half.push_back(slot);
+        }
+        layer_ = std::move(half);
     }
 }
 

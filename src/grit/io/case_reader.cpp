@@ -117,6 +117,21 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
                                      "so the sheet must be whole, but its wall particles are laid from the whole "
                                      "sheet, x < 0 included); lay the whole set-up instead",
                                      key));
+    // An inlet whose section reaches x < 0 emits its x > 0 half, if it is symmetric about the plane.
+    for (InletSpec& in : c.inlets) {
+        const double dx_dir = in.direction[0];
+        const double extent = 0.5 * in.diameter * std::sqrt(std::max(0.0, 1.0 - dx_dir * dx_dir));
+        const double tolerance = 1e-9 * in.diameter;
+        if (!(in.position[0] - extent < -tolerance)) continue;
+        const bool moving = !in.motion.empty() && in.motion[0] != 0.0;
+        if (std::abs(in.position[0]) > tolerance || dx_dir != 0.0 || moving)
+            throw InputError(fmt::format(
+                "key '{}.position' = [{}]: with {} an inlet whose section reaches x < 0 must be centred on the "
+                "plane x = 0 and aimed along it (direction with x = 0), so that it emits the x > 0 half of a "
+                "symmetric jet; lay it on the x >= 0 side otherwise",
+                in.key, fmt::join(in.position, ", "), key));
+        in.half = true;
+    }
     if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
         throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
                                      "is run)", fmt::join(c.domain_max, ", "), key));

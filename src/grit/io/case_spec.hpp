@@ -68,6 +68,9 @@ struct InletSpec {
     /// Velocity of the nozzle itself (a traversing jet) [m/s]; the section is at position + motion t,
     /// and the emitted fluid moves at velocity direction + motion. Empty: at rest.
     std::vector<double> motion;
+    /// On a symmetry plane, a section centred on it: only its x > 0 slots emit (their mirror images
+    /// stand for the others).
+    bool half = false;
 };
 
 /// [jet]: an abrasive water jet as the machine is set up (first seed paper section 4, Fig. 9). The
