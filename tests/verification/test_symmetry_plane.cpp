@@ -287,3 +287,77 @@ TEST(SymmetryPlane, InletAcrossThePlaneMustBeSymmetricAboutIt) {
     EXPECT_NE(odd.find("key 'inlet[0].diameter'"), std::string::npos) << odd;
     EXPECT_NE(odd.find("19 particle columns"), std::string::npos) << odd;
 }
+
+namespace {
+
+// Grains fed over a box symmetric about x = 0 (6 mm either side), with the plane or without.
+std::string feed_case(bool half, const std::string& extra = "") {
+    return std::string(R"(
+[simulation]
+title = "a grain feed across a symmetry plane"
+dimension = 3
+[time]
+end = 1.0e-3
+[output]
+interval = 1.0e-3
+[physics]
+gravity = [0.0, 0.0, -9.81]
+[dem]
+contact_law = "hertz"
+[[grain_feed]]
+material = "sand"
+diameter = 1.0e-3
+min = [-0.006, -0.006, 0.010]
+max = [0.006, 0.006, 0.026]
+velocity = [0.0, 0.0, -20.0]
+mass_flow_rate = 0.05
+interval = 1.0e-4
+seed = 3
+)") + extra + R"(
+[domain]
+min = [-0.03, -0.03, -0.03]
+max = [0.03, 0.03, 0.03]
+)" + (half ? "symmetry = [\"x\"]\n" : "");
+}
+
+}  // namespace
+
+// A grain feed whose box is symmetric about the plane feeds the box's x >= 0 half at half the rate (the
+// grains the whole feed puts on the x < 0 side are the twins'); one that is not symmetric is refused, and
+// so is a grain laid at x < 0.
+TEST(SymmetryPlane, GrainFeedAcrossThePlaneFeedsItsHalf) {
+    auto run = [](const std::string& text, const std::string& name) {
+        Simulation<3> sim(grit::testing::read_case_text(text, name), grit::testing::in_memory());
+        sim.advance_to(1.0e-3);
+        return std::pair{grit::testing::output_value(sim, "grains_fed"), sim.grains()->grains().size()};
+    };
+    const auto [whole_fed, whole_grains] = run(feed_case(false), "feed_whole");
+    const auto [half_fed, half_grains] = run(feed_case(true), "feed_half");
+    std::printf("grain feed: the whole fed %g grains, the half %g\n", whole_fed, half_fed);
+    EXPECT_GT(whole_fed, 15.0);
+    EXPECT_NEAR(2.0 * half_fed, whole_fed, 2.0);  // each insertion rounds its carried fraction
+    EXPECT_EQ(static_cast<double>(half_grains), half_fed);
+    auto error_of = [](const std::string& text) -> std::string {
+        try {
+            Simulation<3> sim(grit::testing::read_case_text(text, "feed_refused"), grit::testing::in_memory());
+        } catch (const grit::core::InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    std::string shifted = feed_case(true);
+    shifted.replace(shifted.find("max = [0.006, 0.006, 0.026]"), 27, "max = [0.008, 0.006, 0.026]");
+    const std::string asymmetric = error_of(shifted);
+    EXPECT_NE(asymmetric.find("key 'grain_feed[0].min'"), std::string::npos) << asymmetric;
+    EXPECT_NE(asymmetric.find("symmetric about the plane"), std::string::npos) << asymmetric;
+    const std::string odd = error_of(feed_case(true, "count = 7\n"));
+    EXPECT_NE(odd.find("key 'grain_feed[0].count' = 7"), std::string::npos) << odd;
+    const std::string laid = error_of(feed_case(true, R"(
+[[grains]]
+material = "sand"
+arrangement = "single"
+position = [-1.0e-3, 0.0, 0.0]
+diameter = 1.0e-3
+)"));
+    EXPECT_NE(laid.find("starts at x = -0.001 m, on the mirrored side"), std::string::npos) << laid;
+}

@@ -132,6 +132,24 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
                 in.key, fmt::join(in.position, ", "), key));
         in.half = true;
     }
+    // A grain feed whose box reaches x < 0 fills the box's x >= 0 half at half the rate, if it is symmetric
+    // about the plane (a grain fed within a radius of the plane straddles it, as [abrasive]'s do).
+    for (GrainFeedSpec& f : c.grain_feeds) {
+        if (!(f.min[0] < 0.0)) continue;
+        if (std::abs(f.min[0] + f.max[0]) > 1e-9 * (f.max[0] - f.min[0]) || f.velocity[0] != 0.0)
+            throw InputError(fmt::format(
+                "key '{}.min' = [{}]: with {} a grain feed whose box reaches x < 0 must be symmetric about the plane "
+                "(min x = -max x) and feed along it (velocity with x = 0), so that it feeds the x >= 0 half of a "
+                "symmetric stream; lay it on the x >= 0 side otherwise",
+                f.key, fmt::join(f.min, ", "), key));
+        if (f.count % 2 != 0)
+            throw InputError(fmt::format("key '{}.count' = {}: with {} the feed's x >= 0 half inserts half the grains, "
+                                         "and an odd count has no half",
+                                         f.key, f.count, key));
+        f.min[0] = 0.0;
+        f.mass_flow_rate *= 0.5;
+        f.count /= 2;
+    }
     if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
         throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
                                      "is run)", fmt::join(c.domain_max, ", "), key));

@@ -31,7 +31,18 @@ SymmetryPlaneModule<Dim>::SymmetryPlaneModule(sim::State<Dim>& state, const sim:
     if (const double damage = sim::longest_damage_reach(setup.spec).length; damage > 0.0)
         depth_ = std::max(depth_, damage + skin);
     state.neighbors.before_build([this](particles::SphParticles<Dim>& ps) { make_images(ps); });
-    sort_grains();  // grains laid at the start
+    if (state_.grains) {  // grains laid at the start: the x >= 0 half, a grain on the plane straddling it
+        const auto& grains = state_.grains->grains();
+        for (Index g = 0; g < grains.size(); ++g)
+            if (grains.position()[g][axis] < 0.0)
+                throw core::InputError(fmt::format(
+                    "key '{}': grain {} ({}) starts at x = {:.6g} m, on the mirrored side of the plane x = 0; place "
+                    "only the x >= 0 half of the set-up (a grain whose centre is within its radius of the plane "
+                    "straddles it)",
+                    setup.spec.symmetry_key, grains.id()[g], domain::describe_id(grains.id()[g]),
+                    grains.position()[g][axis]));
+    }
+    sort_grains();
     const auto& ps = state_.particles;
     const auto* x = ps.position();
     for (Index i = 0; i < ps.size(); ++i)
