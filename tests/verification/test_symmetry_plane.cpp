@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "grit/core/error.hpp"
 #include "grit/modules/mesh_wear.hpp"
 #include "grit/parallel/parallel.hpp"
@@ -112,18 +114,18 @@ TEST(SymmetryPlane, ImagesMirrorTheirSourcesAndStayOutOfOutputs) {
 
 namespace {
 
-// A plate 8 x 8 mm at z = 0 of 1 mm cells, two triangles each (normals up), each cell at x < 0 the
-// mirror image of its twin (the diagonals mirrored), as ASCII STL.
-std::string symmetric_plate_stl() {
+// A plate 2 cells x 2 cells at z = 0 of square cells `cell` [m] wide, two triangles each (normals up), each
+// cell at x < 0 the mirror image of its twin (the diagonals mirrored), as ASCII STL.
+std::string symmetric_plate_stl(int cells = 4, double cell = 1e-3) {
     std::string out = "solid plate\n";
     auto facet = [&](std::array<std::array<double, 2>, 3> c) {
         out += "facet normal 0 0 1\nouter loop\n";
-        for (const auto& p : c) out += "vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " 0\n";
+        for (const auto& p : c) out += fmt::format("vertex {:.9g} {:.9g} 0\n", p[0], p[1]);
         out += "endloop\nendfacet\n";
     };
-    for (int i = -4; i < 4; ++i)
-        for (int j = -4; j < 4; ++j) {
-            const double x0 = 1e-3 * i, x1 = x0 + 1e-3, y0 = 1e-3 * j, y1 = y0 + 1e-3;
+    for (int i = -cells; i < cells; ++i)
+        for (int j = -cells; j < cells; ++j) {
+            const double x0 = cell * i, x1 = x0 + cell, y0 = cell * j, y1 = y0 + cell;
             if (i >= 0) {  // diagonal (x0, y0) - (x1, y1)
                 facet({{{x0, y0}, {x1, y0}, {x1, y1}}});
                 facet({{{x0, y0}, {x1, y1}, {x0, y1}}});
@@ -360,4 +362,40 @@ position = [-1.0e-3, 0.0, 0.0]
 diameter = 1.0e-3
 )"));
     EXPECT_NE(laid.find("starts at x = -0.001 m, on the mirrored side"), std::string::npos) << laid;
+}
+
+// A wall laid on a mesh across the plane lays its x >= 0 half, and a thin wall's sides hold there: the
+// water jet at 200 m/s on a thin plate (jet_on_thin_plate_3d, its plate made symmetric: 8 x 8 cells of
+// 1.5 mm, mirrored diagonals) run on its half puts no water through the plate (the lowest water above
+// -0.5 spacings, as the whole run's test) and gives the whole run's stagnation pressure, and half its mass.
+TEST(SymmetryPlane, ThinMeshWallAcrossThePlaneLaysItsHalf) {
+    grit::parallel::set_threads(2);
+    const auto plate = std::filesystem::temp_directory_path() / "grit_test_symmetric_thin_plate.stl";
+    std::ofstream(plate) << symmetric_plate_stl(4, 1.5e-3);
+    const std::vector<std::string> whole_set = {"wall[0].file=\"" + plate.string() + "\"", "wall[0].thin=true",
+                                                "time.end=2.0e-5"};
+    auto half_set = whole_set;
+    half_set.push_back("domain.symmetry=[\"x\"]");
+    grit::sim::Simulation<3> whole(grit::testing::load_case("jet_on_thin_plate_3d/case.toml", whole_set),
+                                   grit::testing::in_memory());
+    grit::sim::Simulation<3> half(grit::testing::load_case("jet_on_thin_plate_3d/case.toml", half_set),
+                                  grit::testing::in_memory());
+    std::filesystem::remove(plate);
+    const double dx = half.spec().particle_spacing;
+    double lowest = 1.0;
+    half.advance_to(2.0e-5, [&] {
+        const auto& ps = half.particles();
+        for (Index i = 0; i < ps.size(); ++i)
+            if (ps.phase()[i] == 0) lowest = std::min(lowest, ps.position()[i][2]);
+    });
+    whole.advance_to(2.0e-5);
+    const double p_whole = grit::testing::output_value(whole, "p_stagnation");
+    const double p_half = grit::testing::output_value(half, "p_stagnation");
+    std::printf("thin plate across the plane: lowest water %.2f spacings; stagnation pressure %.4g Pa (whole %.4g, "
+                "%+.2g relative)\n",
+                lowest / dx, p_half, p_whole, (p_half - p_whole) / p_whole);
+    EXPECT_GT(lowest, -0.5 * dx);
+    EXPECT_GT(p_whole, 1e7);
+    EXPECT_LT(std::abs(p_half - p_whole) / p_whole, 1e-9);
+    EXPECT_EQ(2.0 * grit::testing::output_value(half, "mass_in"), grit::testing::output_value(whole, "mass_in"));
 }

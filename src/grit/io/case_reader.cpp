@@ -23,6 +23,7 @@
 #include "grit/io/material_tables.hpp"
 #include "grit/io/particle_budget.hpp"
 #include "grit/io/shape_reader.hpp"
+#include "grit/mesh/mirror_partners.hpp"
 #include "grit/sph/kernels.hpp"
 
 namespace grit::io {
@@ -93,7 +94,7 @@ void read_periodic(CaseSpec& c, const Section& domain, const std::optional<std::
 }
 
 /// domain.symmetry = ["x"], or jet.symmetric: the plane x = 0 is a symmetry plane (modules/symmetry_plane).
-/// Refuses what the images do not support, each with its reason: a periodic x axis, thin walls.
+/// Refuses what the images do not support, each with its reason: a periodic x axis.
 void read_symmetry(CaseSpec& c, const Section& domain) {
     if (domain.has("symmetry")) {
         const auto axes = read_axes(domain, "symmetry", c.dimension);
@@ -111,12 +112,34 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
                                      "at once (the mirror images are made for the plane x = 0 alone, not for its "
                                      "periodic copies); lay the whole period, or make another axis periodic",
                                      key, c.periodic_key));
-    if (c.has_thin_walls())
-        throw InputError(fmt::format("key '{}': the symmetry plane does not take thin walls ([[wall]] thin: each list "
-                                     "build reads every fluid particle's side, mirror images' too, from the sheet, "
-                                     "so the sheet must be whole, but its wall particles are laid from the whole "
-                                     "sheet, x < 0 included); lay the whole set-up instead",
-                                     key));
+    // A wall laid on a mesh that reaches x < 0 lays its x >= 0 half, if the mesh is symmetric about the plane
+    // (a thin wall's sides are read from the whole sheet, the mirror images' too).
+    for (BlockSpec& w : c.walls) {
+        if (w.shape.kind != "mesh") continue;
+        const auto& m = *w.shape.mesh;
+        double extent = 0.0, lowest = 0.0;
+        for (const auto& v : m.vertices()) {
+            for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(v[k]));
+            lowest = std::min(lowest, v[0]);
+        }
+        const double tolerance = 1e-6 * extent;
+        if (!(lowest < -tolerance)) continue;
+        std::vector<mesh::Corners> corners;
+        for (const auto& t : m.triangles())
+            corners.push_back({m.vertices()[static_cast<std::size_t>(t[0])], m.vertices()[static_cast<std::size_t>(t[1])],
+                               m.vertices()[static_cast<std::size_t>(t[2])]});
+        const auto partner = mesh::mirror_partners(corners, 0, tolerance);
+        for (std::size_t t = 0; t < partner.size(); ++t)
+            if (partner[t] < 0) {
+                const auto centre = (corners[t][0] + corners[t][1] + corners[t][2]) * (1.0 / 3.0);
+                throw InputError(fmt::format(
+                    "key '{}.file': with '{}' a wall mesh that reaches x < 0 must be symmetric about the plane x = 0, "
+                    "but its triangle {} at ({:.6g}, {:.6g}, {:.6g}) m has no mirror image; give the mesh whole and "
+                    "symmetric, or only its x >= 0 part",
+                    w.key, key, t, centre[0], centre[1], centre[2]));
+            }
+        w.shape.half = true;
+    }
     // An inlet whose section reaches x < 0 emits its x > 0 half, if it is symmetric about the plane.
     for (InletSpec& in : c.inlets) {
         const double dx_dir = in.direction[0];
@@ -126,7 +149,7 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
         const bool moving = !in.motion.empty() && in.motion[0] != 0.0;
         if (std::abs(in.position[0]) > tolerance || dx_dir != 0.0 || moving)
             throw InputError(fmt::format(
-                "key '{}.position' = [{}]: with {} an inlet whose section reaches x < 0 must be centred on the "
+                "key '{}.position' = [{}]: with '{}' an inlet whose section reaches x < 0 must be centred on the "
                 "plane x = 0 and aimed along it (direction with x = 0), so that it emits the x > 0 half of a "
                 "symmetric jet; lay it on the x >= 0 side otherwise",
                 in.key, fmt::join(in.position, ", "), key));
@@ -138,12 +161,12 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
         if (!(f.min[0] < 0.0)) continue;
         if (std::abs(f.min[0] + f.max[0]) > 1e-9 * (f.max[0] - f.min[0]) || f.velocity[0] != 0.0)
             throw InputError(fmt::format(
-                "key '{}.min' = [{}]: with {} a grain feed whose box reaches x < 0 must be symmetric about the plane "
+                "key '{}.min' = [{}]: with '{}' a grain feed whose box reaches x < 0 must be symmetric about the plane "
                 "(min x = -max x) and feed along it (velocity with x = 0), so that it feeds the x >= 0 half of a "
                 "symmetric stream; lay it on the x >= 0 side otherwise",
                 f.key, fmt::join(f.min, ", "), key));
         if (f.count % 2 != 0)
-            throw InputError(fmt::format("key '{}.count' = {}: with {} the feed's x >= 0 half inserts half the grains, "
+            throw InputError(fmt::format("key '{}.count' = {}: with '{}' the feed's x >= 0 half inserts half the grains, "
                                          "and an odd count has no half",
                                          f.key, f.count, key));
         f.min[0] = 0.0;

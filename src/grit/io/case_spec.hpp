@@ -37,6 +37,9 @@ struct ShapeSpec {
     /// part of the sheet, and particles on the two sides do not interact (their wall normals point away
     /// from each other; second seed paper, sec. 3.2).
     bool thin = false;
+    /// mesh on a symmetry plane, the mesh symmetric about it: the particles at x >= 0 only, on a lattice
+    /// aligned on x = 0 (their mirror images stand for the others).
+    bool half = false;
 };
 
 /// A block of particles: fluid, solid or wall.

@@ -81,7 +81,9 @@ std::vector<core::Vec<Dim>> lattice_points(const io::ShapeSpec& shape, double dx
             // The water's side: +1 in front of the facets (particles behind them), -1 behind.
             const double water = shape.side == "outside" || shape.side == "front" ? -1.0 : 1.0;
             if (shape.thin) distance.bin(t);
-            for_each_lattice_point<3>(lo - Vec::filled(t), hi + Vec::filled(t), dx, [&](const Vec& x) {
+            Vec from = lo - Vec::filled(t);
+            if (shape.half) from[0] = 0.0;  // on a symmetry plane: the x >= 0 half, the lattice mirror-symmetric
+            for_each_lattice_point<3>(from, hi + Vec::filled(t), dx, [&](const Vec& x) {
                 const auto q = distance.query(x);
                 const double d = -water * q.distance;  // > 0 on the particles' side
                 if (d > 0.0 && d <= t && (closed || !q.on_rim)) {

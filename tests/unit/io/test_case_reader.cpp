@@ -938,8 +938,9 @@ TEST_F(CaseReaderTest, IntegersBeyondTwoToThe53AreNumbers) {
     expect_error(minimal_2d, {"domain.max=[9007199254740993, -9007199254740993]"}, {"domain.max"});
 }
 
-// What the symmetry plane refuses, each with its reason: a periodic x, thin walls. ISPH and mesh walls
-// are taken (tests/validation/test_isph.cpp, tests/verification/test_symmetry_plane.cpp).
+// What the symmetry plane refuses, each with its reason: a periodic x, a wall mesh across the plane that is
+// not symmetric about it (jet_on_thin_plate_3d's plate: two triangles split by a diagonal). ISPH and mesh
+// walls are taken (tests/validation/test_isph.cpp, tests/verification/test_symmetry_plane.cpp).
 TEST_F(CaseReaderTest, SymmetryPlaneRefusalsNameTheirReason) {
     EXPECT_TRUE(read_ok(minimal_2d, {"domain.symmetry=[\"x\"]"}).symmetry_plane);
     expect_error(minimal_2d, {"domain.symmetry=[\"x\"]", "domain.periodic=[\"x\"]"},
@@ -950,5 +951,6 @@ TEST_F(CaseReaderTest, SymmetryPlaneRefusalsNameTheirReason) {
                     .symmetry_plane);
     expect_error_file(fs::path(GRIT_SOURCE_DIR) / "cases" / "jet_on_thin_plate_3d" / "case.toml",
                       {"domain.symmetry=[\"x\"]", "wall[0].thin=true"},
-                      {"'domain.symmetry'", "does not take thin walls", "[[wall]] thin", "mirror images"});
+                      {"'wall[0].file'", "'domain.symmetry'", "must be symmetric about the plane x = 0",
+                       "no mirror image"});
 }
