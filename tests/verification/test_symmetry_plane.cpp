@@ -228,7 +228,7 @@ TEST(SymmetryPlane, GrainsWearAMeshAcrossThePlaneAsTheWholeSetUpDoes) {
 }
 
 // A mesh that reaches x < 0 must be symmetric about the plane: the plate shifted 0.5 mm is refused,
-// naming the mesh and a triangle without its mirror image.
+// naming the mesh and a triangle without its mirror image; so is a mesh that moves across the plane.
 TEST(SymmetryPlane, MeshNotSymmetricAboutThePlaneIsRefused) {
     std::ofstream(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl") << symmetric_plate_stl();
     auto text = plate_case(true);
@@ -241,6 +241,23 @@ TEST(SymmetryPlane, MeshNotSymmetricAboutThePlaneIsRefused) {
         EXPECT_NE(what.find("mesh 'plate'"), std::string::npos) << what;
         EXPECT_NE(what.find("not symmetric about the plane x = 0"), std::string::npos) << what;
         EXPECT_NE(what.find("no mirror image"), std::string::npos) << what;
+    }
+    // A symmetric mesh moving across the plane is refused; turning about an axis along x it is its own
+    // mirror image.
+    for (const auto& [motion, refused] : std::vector<std::pair<std::string, bool>>{
+             {"velocity = [1.0, 0.0, 0.0]\n", true},
+             {"angular_velocity = [0.0, 0.0, 10.0]\n", true},
+             {"angular_velocity = [10.0, 0.0, 0.0]\ncentre = [0.002, 0.0, 0.0]\n", false}}) {
+        SCOPED_TRACE(motion);
+        auto moving = plate_case(true);
+        moving.replace(moving.find("wear_model = \"finnie\""), 0, motion);
+        try {
+            grit::sim::Simulation<3> sim(grit::testing::read_case_text(moving, "plate_moving"), grit::testing::in_memory());
+            EXPECT_FALSE(refused) << "a mesh moving across the plane was taken";
+        } catch (const grit::core::InputError& e) {
+            EXPECT_TRUE(refused) << e.what();
+            EXPECT_NE(std::string(e.what()).find("moves across the symmetry plane"), std::string::npos) << e.what();
+        }
     }
     std::filesystem::remove(std::filesystem::temp_directory_path() / "grit_test_symmetric_plate.stl");
 }

@@ -49,19 +49,17 @@ void MeshWearModule<Dim>::pair_mirror_images() {
         const auto& meshes = setup_.spec.meshes;
         const std::string& plane = setup_.spec.symmetry_key;
         for (const auto& m : meshes) {
-            // The twin of a mesh moving at v turns at -v_x; one turning about an axis must turn about x (an
-            // axial vector mirrors to (w_x, -w_y, -w_z)) through the plane.
-            const bool turns = !m.angular_velocity.empty() &&
-                               (m.angular_velocity[0] != 0.0 || m.angular_velocity[1] != 0.0 || m.angular_velocity[2] != 0.0);
-            const bool symmetric_motion =
-                (m.velocity.empty() || m.velocity[0] == 0.0) &&
-                (!turns || (m.angular_velocity[1] == 0.0 && m.angular_velocity[2] == 0.0 &&
-                             (m.centre.empty() || m.centre[0] == 0.0)));
-            if (!symmetric_motion)
+            // The mirror image of a mesh moving at v moves at v with v_x negated, and of one turning at w turns
+            // at (w_x, -w_y, -w_z) (an axial vector): its motion is its own only along y and z, and turning
+            // about an axis along x (which the mirror maps onto itself).
+            const bool along_plane = m.velocity.empty() || m.velocity[0] == 0.0;
+            const bool about_x = m.angular_velocity.empty() ||
+                                 (m.angular_velocity[1] == 0.0 && m.angular_velocity[2] == 0.0);
+            if (!along_plane || !about_x)
                 throw core::InputError(fmt::format(
-                    "key '{}': mesh '{}' moves across the symmetry plane ({}: its mirror image would move "
-                    "otherwise); with a symmetry plane a mesh may move along y and z and turn about an x axis "
-                    "through x = 0 only",
+                    "key '{}': mesh '{}' moves across the symmetry plane of {} (its mirror image would move "
+                    "otherwise); with a symmetry plane a mesh may move along y and z and turn about an axis along "
+                    "x only",
                     m.key, m.name, plane));
         }
         const auto& corners = state_.grains->meshes()->corners();
