@@ -172,6 +172,51 @@ struct SubDomain {
     std::vector<Index> owner;  // per ghost: its index in the other sub-domain
 };
 
+/// `whole` cut at x = cut into two sub-domains, each with the other's particles within `width` of the cut
+/// as ghosts; from[side] is the whole-set index of each of its particles.
+std::array<SubDomain, 2> split_at(const grit::particles::SphParticles<2>& whole, const std::vector<double>& damage,
+                                  double cut, double width, std::array<std::vector<Index>, 2>& from) {
+    std::array<SubDomain, 2> sub;
+    for (int side = 0; side < 2; ++side) {
+        auto mine = [&](Index i) { return (whole.position()[i][0] < cut) == (side == 0); };
+        for (Index i = 0; i < whole.size(); ++i)
+            if (mine(i)) from[side].push_back(i);
+        sub[side].owned = static_cast<Index>(from[side].size());
+        for (Index i = 0; i < whole.size(); ++i)
+            if (!mine(i) && std::abs(whole.position()[i][0] - cut) <= width) from[side].push_back(i);
+        sub[side].ps = whole;
+        sub[side].ps.gather(from[side]);
+        for (const Index i : from[side]) sub[side].damage.push_back(damage[static_cast<std::size_t>(i)]);
+    }
+    for (int side = 0; side < 2; ++side) {
+        std::map<Index, Index> there;  // whole-set index -> index in the other sub-domain
+        for (std::size_t k = 0; k < from[1 - side].size(); ++k) there[from[1 - side][k]] = static_cast<Index>(k);
+        for (std::size_t k = static_cast<std::size_t>(sub[side].owned); k < from[side].size(); ++k)
+            sub[side].owner.push_back(there.at(from[side][k]));
+    }
+    return sub;
+}
+
+/// Labels each sub-domain with `label(side, ghost_labels)`, exchanges the ghosts' labels, and again until
+/// no label changes (at most 20 rounds); returns the rounds it took.
+using Labels = std::vector<grit::domain::ParticleId>;
+int exchange_until_settled(const std::array<SubDomain, 2>& sub, std::array<Labels, 2>& labels,
+                           const std::function<Labels(int, const grit::domain::ParticleId*)>& label) {
+    std::array<Labels, 2> ghost_labels;
+    int rounds = 0;
+    for (bool changed = true; changed && rounds < 20; ++rounds) {
+        for (int side = 0; side < 2; ++side) labels[side] = label(side, rounds == 0 ? nullptr : ghost_labels[side].data());
+        changed = false;
+        for (int side = 0; side < 2; ++side) {
+            Labels fresh;
+            for (const Index o : sub[side].owner) fresh.push_back(labels[1 - side][static_cast<std::size_t>(o)]);
+            changed |= fresh != ghost_labels[side];
+            ghost_labels[side] = fresh;
+        }
+    }
+    return rounds;
+}
+
 TEST(SplitAnalyses, CrackLabelsExchangedThroughGhostsGiveTheWholeSetsCracks) {
     // A 40 x 30 solid lattice with random damage (20 %) and a snake of damage that crosses the cut at
     // x = 20 dx four times: its label must travel through several exchanges.
@@ -197,42 +242,13 @@ TEST(SplitAnalyses, CrackLabelsExchangedThroughGhostsGiveTheWholeSetsCracks) {
     ASSERT_GT(reference.crack_count, 3);
 
     const double cut = 19.5 * h;
-    std::array<SubDomain, 2> sub;
     std::array<std::vector<Index>, 2> from;  // whole-set index of each particle of each sub-domain
-    for (int side = 0; side < 2; ++side) {
-        auto mine = [&](Index i) { return (whole.position()[i][0] < cut) == (side == 0); };
-        for (Index i = 0; i < whole.size(); ++i)
-            if (mine(i)) from[side].push_back(i);
-        sub[side].owned = static_cast<Index>(from[side].size());
-        for (Index i = 0; i < whole.size(); ++i)
-            if (!mine(i) && std::abs(whole.position()[i][0] - cut) <= options.link_distance) from[side].push_back(i);
-        sub[side].ps = whole;
-        sub[side].ps.gather(from[side]);
-        for (const Index i : from[side]) sub[side].damage.push_back(damage[static_cast<std::size_t>(i)]);
-    }
-    for (int side = 0; side < 2; ++side) {
-        std::map<Index, Index> there;  // whole-set index -> index in the other sub-domain
-        for (std::size_t k = 0; k < from[1 - side].size(); ++k) there[from[1 - side][k]] = static_cast<Index>(k);
-        for (std::size_t k = static_cast<std::size_t>(sub[side].owned); k < from[side].size(); ++k)
-            sub[side].owner.push_back(there.at(from[side][k]));
-    }
-
-    // Label, exchange the ghosts' labels, again until no label changes.
-    std::array<std::vector<grit::domain::ParticleId>, 2> labels, ghost_labels;
-    int rounds = 0;
-    for (bool changed = true; changed; ++rounds) {
-        ASSERT_LT(rounds, 20);
-        for (int side = 0; side < 2; ++side)
-            labels[side] = grit::analysis::crack_labels<2>(sub[side].ps, sub[side].damage.data(), options, sub[side].owned,
-                                                           rounds == 0 ? nullptr : ghost_labels[side].data());
-        changed = false;
-        for (int side = 0; side < 2; ++side) {
-            std::vector<grit::domain::ParticleId> fresh;
-            for (const Index o : sub[side].owner) fresh.push_back(labels[1 - side][static_cast<std::size_t>(o)]);
-            changed |= fresh != ghost_labels[side];
-            ghost_labels[side] = fresh;
-        }
-    }
+    const auto sub = split_at(whole, damage, cut, options.link_distance, from);
+    std::array<Labels, 2> labels;
+    const int rounds = exchange_until_settled(sub, labels, [&](int side, const grit::domain::ParticleId* ghosts) {
+        return grit::analysis::crack_labels<2>(sub[side].ps, sub[side].damage.data(), options, sub[side].owned, ghosts);
+    });
+    ASSERT_LT(rounds, 20);
     EXPECT_GT(rounds, 2);  // the snake needed more than one exchange
     // Every owned particle holds the whole set's label; the shares added label by label count the same cracks.
     std::map<grit::domain::ParticleId, Index> sizes;
@@ -296,40 +312,13 @@ TEST(SplitAnalyses, FragmentLabelsOfTwoSubDomainsRemoveWhatTheWholeSetRemoves) {
     ASSERT_GT(kept, 50);  // the snake at least
 
     const double cut = 19.5 * h;
-    std::array<SubDomain, 2> sub;
     std::array<std::vector<Index>, 2> from;
-    for (int side = 0; side < 2; ++side) {
-        auto mine = [&](Index i) { return (whole.position()[i][0] < cut) == (side == 0); };
-        for (Index i = 0; i < whole.size(); ++i)
-            if (mine(i)) from[side].push_back(i);
-        sub[side].owned = static_cast<Index>(from[side].size());
-        for (Index i = 0; i < whole.size(); ++i)
-            if (!mine(i) && std::abs(whole.position()[i][0] - cut) <= link) from[side].push_back(i);
-        sub[side].ps = whole;
-        sub[side].ps.gather(from[side]);
-        for (const Index i : from[side]) sub[side].damage.push_back(damage[static_cast<std::size_t>(i)]);
-    }
-    for (int side = 0; side < 2; ++side) {
-        std::map<Index, Index> there;
-        for (std::size_t k = 0; k < from[1 - side].size(); ++k) there[from[1 - side][k]] = static_cast<Index>(k);
-        for (std::size_t k = static_cast<std::size_t>(sub[side].owned); k < from[side].size(); ++k)
-            sub[side].owner.push_back(there.at(from[side][k]));
-    }
-    std::array<std::vector<grit::domain::ParticleId>, 2> local, ghost_labels;
-    int rounds = 0;
-    for (bool changed = true; changed; ++rounds) {
-        ASSERT_LT(rounds, 20);
-        for (int side = 0; side < 2; ++side)
-            local[side] = grit::analysis::fragment_labels<2>(sub[side].ps, sub[side].damage.data(), link, sub[side].owned,
-                                                             rounds == 0 ? nullptr : ghost_labels[side].data());
-        changed = false;
-        for (int side = 0; side < 2; ++side) {
-            std::vector<grit::domain::ParticleId> fresh;
-            for (const Index o : sub[side].owner) fresh.push_back(local[1 - side][static_cast<std::size_t>(o)]);
-            changed |= fresh != ghost_labels[side];
-            ghost_labels[side] = fresh;
-        }
-    }
+    const auto sub = split_at(whole, damage, cut, link, from);
+    std::array<Labels, 2> local;
+    const int rounds = exchange_until_settled(sub, local, [&](int side, const grit::domain::ParticleId* ghosts) {
+        return grit::analysis::fragment_labels<2>(sub[side].ps, sub[side].damage.data(), link, sub[side].owned, ghosts);
+    });
+    ASSERT_LT(rounds, 20);
     EXPECT_GT(rounds, 2);
     // Each sub-domain's anchored labels, united.
     std::vector<grit::domain::ParticleId> united;
