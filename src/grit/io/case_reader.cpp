@@ -117,17 +117,15 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
     for (BlockSpec& w : c.walls) {
         if (w.shape.kind != "mesh") continue;
         const auto& m = *w.shape.mesh;
-        double extent = 0.0, lowest = 0.0;
-        for (const auto& v : m.vertices()) {
-            for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(v[k]));
-            lowest = std::min(lowest, v[0]);
-        }
-        const double tolerance = 1e-6 * extent;
-        if (!(lowest < -tolerance)) continue;
         std::vector<mesh::Corners> corners;
-        for (const auto& t : m.triangles())
+        double lowest = 0.0;
+        for (const auto& t : m.triangles()) {
             corners.push_back({m.vertices()[static_cast<std::size_t>(t[0])], m.vertices()[static_cast<std::size_t>(t[1])],
                                m.vertices()[static_cast<std::size_t>(t[2])]});
+            for (const auto& corner : corners.back()) lowest = std::min(lowest, corner[0]);
+        }
+        const double tolerance = mesh::mirror_tolerance(corners);
+        if (!(lowest < -tolerance)) continue;
         const auto partner = mesh::mirror_partners(corners, 0, tolerance);
         for (std::size_t t = 0; t < partner.size(); ++t)
             if (partner[t] < 0) {

@@ -2,6 +2,7 @@
 // centroid looked up in its cell and the cells around it, the corners then compared one by one.
 #include "grit/mesh/mirror_partners.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -71,6 +72,14 @@ std::vector<std::int64_t> mirror_partners(const std::vector<Corners>& triangles,
                 }
     }
     return partner;
+}
+
+double mirror_tolerance(const std::vector<Corners>& triangles) {
+    double extent = 0.0;
+    for (const Corners& t : triangles)
+        for (const Vec3& c : t)
+            for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(c[k]));
+    return 1e-6 * extent;
 }
 
 }  // namespace grit::mesh

@@ -18,4 +18,8 @@ using Corners = std::array<core::Vec<3>, 3>;
 /// (one standing across the plane, symmetric about it) is its own partner.
 std::vector<std::int64_t> mirror_partners(const std::vector<Corners>& triangles, int axis, double tolerance);
 
+/// The tolerance a mirror image is found to: 1e-6 of the triangles' largest coordinate. STL corners are
+/// single precision, so this is far above a mirror's round-off and far below any feature a mesh resolves.
+double mirror_tolerance(const std::vector<Corners>& triangles);
+
 }  // namespace grit::mesh

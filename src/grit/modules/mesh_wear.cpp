@@ -63,13 +63,7 @@ void MeshWearModule<Dim>::pair_mirror_images() {
                     m.key, m.name, plane));
         }
         const auto& corners = state_.grains->meshes()->corners();
-        double extent = 0.0;
-        for (const auto& t : corners)
-            for (const auto& c : t)
-                for (int k = 0; k < 3; ++k) extent = std::max(extent, std::abs(c[k]));
-        // STL corners are single precision: 1e-6 of the meshes' size is far above their mirror's round-off
-        // and far below any feature a mesh resolves.
-        const double tolerance = 1e-6 * extent;
+        const double tolerance = mesh::mirror_tolerance(corners);
         mirror_ = mesh::mirror_partners(corners, 0, tolerance);
         for (std::size_t t = 0; t < corners.size(); ++t) {
             if (mirror_[t] >= 0) continue;
