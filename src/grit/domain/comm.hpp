@@ -4,6 +4,11 @@
 // so that no module or analysis changes when it does.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,6 +48,8 @@ public:
     virtual double min(double value) const = 0;
     virtual double max(double value) const = 0;
     virtual double sum(double value) const = 0;
+    /// The smallest of the ranks' integers (a particle id: ids need all 64 bits, which a double does not hold).
+    virtual std::int64_t min_id(std::int64_t value) const = 0;
     /// True on every rank when `value` is true on any (for the shared neighbour-list rebuild decision, which
     /// does not go through it yet: each list is still rebuilt by its owner).
     virtual bool any(bool value) const = 0;
@@ -51,6 +58,10 @@ public:
     /// out as max does (a bin no rank has a particle in stays NaN).
     virtual void max_each(std::vector<double>& values) const = 0;
     virtual void sum_each(std::vector<double>& values) const = 0;
+    /// Point to point, every rank at once: outgoing[r] goes to rank r (empty: nothing for it), and the
+    /// result's [r] is what rank r sent this one (a halo's values, migrating particles).
+    using Message = std::vector<std::byte>;
+    virtual std::vector<Message> exchange(std::vector<Message> outgoing) const = 0;
 
     /// `value` of this rank combined with the others' by `kind`. `same` returns it as it is (every rank
     /// holds it); `whole_set` values are computed over the gathered set by their module, not here.
@@ -66,6 +77,23 @@ public:
     }
 };
 
+/// The union of the ids every rank holds, sorted, each once, on every rank (the fragments that some
+/// sub-domain's particles anchor to intact rock).
+inline std::vector<std::int64_t> unite(const Comm& comm, std::vector<std::int64_t> ids) {
+    Comm::Message mine(ids.size() * sizeof(std::int64_t));
+    if (!ids.empty()) std::memcpy(mine.data(), ids.data(), mine.size());
+    const auto all = comm.exchange(std::vector<Comm::Message>(static_cast<std::size_t>(comm.size()), mine));
+    ids.clear();
+    for (const auto& m : all) {
+        const std::size_t first = ids.size();
+        ids.resize(first + m.size() / sizeof(std::int64_t));
+        if (!m.empty()) std::memcpy(ids.data() + first, m.data(), m.size());
+    }
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+}
+
 /// One process, one sub-domain: every reduction is the value itself.
 class SerialComm final : public Comm {
 public:
@@ -74,9 +102,14 @@ public:
     double min(double value) const override { return value; }
     double max(double value) const override { return value; }
     double sum(double value) const override { return value; }
+    std::int64_t min_id(std::int64_t value) const override { return value; }
     bool any(bool value) const override { return value; }
     void max_each(std::vector<double>&) const override {}
     void sum_each(std::vector<double>&) const override {}
+    std::vector<Message> exchange(std::vector<Message> outgoing) const override {
+        if (outgoing.size() != 1) throw std::logic_error("one process: a message for a rank other than 0");
+        return outgoing;
+    }
 };
 
 }  // namespace grit::domain

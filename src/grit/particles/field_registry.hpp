@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <functional>
 #include <limits>
@@ -49,6 +50,13 @@ public:
     virtual void mirror_copy(const std::vector<Index>& from, const std::vector<Index>& to, int axis) = 0;
     /// Entry to[k] becomes a copy of entry from[k], for each k (a periodic ghost of its owner).
     virtual void copy(const std::vector<Index>& from, const std::vector<Index>& to) = 0;
+    /// The bytes one entry packs to.
+    virtual std::size_t entry_bytes() const = 0;
+    /// Appends the entries `rows`, in that order, to `out` as raw bytes (a message to another sub-domain).
+    virtual void pack(const std::vector<Index>& rows, std::vector<std::byte>& out) const = 0;
+    /// Entry rows[k] becomes the k-th entry packed at `in` (by the same field of another sub-domain);
+    /// returns the bytes read.
+    virtual std::size_t unpack(const std::byte* in, const std::vector<Index>& rows) = 0;
     /// Appends this column, as written to snapshots, to `cloud` (vectors padded to 3 components).
     /// `phase` and `material` (the particles' phases and material indices, or null) apply the output
     /// scope: a real-valued column is written as NaN on the particles it means nothing for.
@@ -106,6 +114,18 @@ public:
     void copy(const std::vector<Index>& from, const std::vector<Index>& to) override {
         for (std::size_t k = 0; k < from.size(); ++k)
             values_[static_cast<std::size_t>(to[k])] = values_[static_cast<std::size_t>(from[k])];
+    }
+    std::size_t entry_bytes() const override { return sizeof(T); }
+    void pack(const std::vector<Index>& rows, std::vector<std::byte>& out) const override {
+        const std::size_t start = out.size();
+        out.resize(start + rows.size() * sizeof(T));
+        for (std::size_t k = 0; k < rows.size(); ++k)
+            std::memcpy(out.data() + start + k * sizeof(T), &values_[static_cast<std::size_t>(rows[k])], sizeof(T));
+    }
+    std::size_t unpack(const std::byte* in, const std::vector<Index>& rows) override {
+        for (std::size_t k = 0; k < rows.size(); ++k)
+            std::memcpy(&values_[static_cast<std::size_t>(rows[k])], in + k * sizeof(T), sizeof(T));
+        return rows.size() * sizeof(T);
     }
     void append_output(io::PointCloud& cloud, const std::int32_t* phase = nullptr,
                        const std::int32_t* material = nullptr) const override;
@@ -275,6 +295,28 @@ public:
     /// Entry to[k] of every field becomes a copy of entry from[k] (FieldBase::copy).
     void copy(const std::vector<Index>& from, const std::vector<Index>& to) {
         for (auto& f : fields_) f->copy(from, to);
+    }
+    /// Every field's entries `rows`, field after field in registration order (a registry with the same
+    /// fields registered in the same order, another sub-domain's, unpacks them).
+    std::vector<std::byte> pack(const std::vector<Index>& rows) const {
+        std::vector<std::byte> out;
+        for (const auto& f : fields_) f->pack(rows, out);
+        return out;
+    }
+    /// The bytes one particle packs to.
+    std::size_t entry_bytes() const {
+        std::size_t entry = 0;
+        for (const auto& f : fields_) entry += f->entry_bytes();
+        return entry;
+    }
+    /// Entries `rows` become those packed in `in`; `in` must hold exactly as many.
+    void unpack(const std::vector<std::byte>& in, const std::vector<Index>& rows) {
+        const std::size_t entry = entry_bytes();
+        if (in.size() != rows.size() * entry)
+            throw std::logic_error("particle message of " + std::to_string(in.size()) + " bytes for " +
+                                   std::to_string(rows.size()) + " particles of " + std::to_string(entry) + " bytes");
+        std::size_t read = 0;
+        for (auto& f : fields_) read += f->unpack(in.data() + read, rows);
     }
     void gather(const std::vector<Index>& source) {
         for (auto& f : fields_) f->gather(source);

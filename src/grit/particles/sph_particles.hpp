@@ -75,7 +75,11 @@ public:
     Index append(Index n) { return append(n, {domain::IdKind::hand_built, 0}, this->take_hand_built_serials(n)); }
     /// Grows the set by n mirror images (a symmetry plane's ghosts, modules/symmetry_plane.*): they take
     /// no identifier of their own; the caller gives each the id image_id(source id) and its source's values.
-    Index append_images(Index n) {
+    Index append_images(Index n) { return append_received(n); }
+    /// Grows the set by n particles whose every field, the id included, the caller fills: mirror images,
+    /// ghosts of another sub-domain's particles, and particles that migrate here from one
+    /// (domain/process_halo.hpp).
+    Index append_received(Index n) {
         const Index first = size();
         fields_.resize(first + n);
         ++generation_;

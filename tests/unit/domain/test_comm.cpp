@@ -38,6 +38,10 @@ public:
     void sum_each(std::vector<double>& values) const override {
         for (double& v : values) v = sum(v);
     }
+    std::int64_t min_id(std::int64_t v) const override { return v; }  // the others hold no ids
+    std::vector<Message> exchange(std::vector<Message>) const override {
+        throw std::logic_error("FixedPeers holds values, not messages");
+    }
 
 private:
     std::vector<double> others_;
