@@ -21,8 +21,8 @@ enum class Combine {
     sum,        ///< a sum over particles or events (mass, energy, counts)
     min,        ///< a minimum over particles (the smallest porosity)
     max,        ///< a maximum over particles (the fastest speed, the largest plastic strain)
-    whole_set,  ///< needs the whole set, not a combination of local values (the crack count's labels, the run's
-                ///< first impact): gathered before it is computed
+    whole_set,  ///< needs the whole set, not a combination of local values (the crack count's labels):
+                ///< computed by its module from labels the sub-domains exchange
 };
 
 /// The name of a combine kind, as documentation and messages write it.

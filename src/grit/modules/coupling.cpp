@@ -185,7 +185,7 @@ void CouplingModule<Dim>::output_values(std::vector<sim::OutputValue>& out) cons
     if (g > 0.0) out.push_back(OutputValue::real("settling_velocity", settling_velocity, domain::Combine::same).series_only());
     if (g > 0.0 && grain_mass > 0.0)
         out.push_back(OutputValue::real("terminal_velocity", settling_velocity, domain::Combine::same).summary_only());
-    out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed(), domain::Combine::whole_set).summary_only());
+    out.push_back(OutputValue::real("contact_velocity", state_.impacts.first_speed(setup_.comm), domain::Combine::same).summary_only());
     out.push_back(OutputValue::count("coupling_pairs", static_cast<double>(coupling_.pair_count()), domain::Combine::sum).series_only());
     bed_values(out);
 }

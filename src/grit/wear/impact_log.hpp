@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "grit/domain/comm.hpp"
 #include "grit/domain/particle_id.hpp"
 #include "grit/io/hdf5_file.hpp"
 
@@ -31,11 +32,19 @@ struct ImpactRecord {
 class ImpactLog {
 public:
     void add(ImpactRecord r) {
-        if (total() == 0) first_speed_ = r.speed;
+        // The earliest, and of impacts in one step the lowest grain id: which one is first then does not
+        // depend on the order the contacts were found in, nor on how the grains are split over sub-domains.
+        if (r.time < first_time_ || (r.time == first_time_ && r.grain < first_grain_)) {
+            first_time_ = r.time;
+            first_grain_ = r.grain;
+            first_speed_ = r.speed;
+        }
         records_.push_back(std::move(r));
     }
-    /// Speed of the run's first impact [m/s] (the contact velocity of a single grain); NaN before it.
-    double first_speed() const noexcept { return first_speed_; }
+    /// Speed of the run's first impact [m/s] (the contact velocity of a single grain); NaN before it. Over
+    /// sub-domains, that of the earliest impact of any (a local pass, the earliest impact each holds, and
+    /// three reductions).
+    double first_speed(const domain::Comm& comm) const;
     /// The records of this run since it started or was restarted (earlier ones are in impacts.csv).
     const std::vector<ImpactRecord>& records() const noexcept { return records_; }
     /// Every impact of the run, restarts included.
@@ -57,6 +66,8 @@ private:
     std::vector<ImpactRecord> records_;
     std::size_t written_ = 0;  ///< records_ already in the file
     std::size_t earlier_ = 0;  ///< impacts before the restart this run continues
+    double first_time_ = std::numeric_limits<double>::infinity();
+    domain::ParticleId first_grain_ = std::numeric_limits<domain::ParticleId>::max();
     double first_speed_ = std::numeric_limits<double>::quiet_NaN();
     int dimension_ = 2;
     std::ofstream file_;

@@ -7,4 +7,5 @@ set(GRIT_MESH_TEST_SOURCES
   unit/mesh/test_mirror_partners.cpp
   unit/mesh/test_mesh_walls.cpp
   unit/wear/test_wear_models.cpp
+  unit/wear/test_impact_log.cpp
 )
