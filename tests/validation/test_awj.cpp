@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "grit/analysis/crater.hpp"
+#include "grit/modules/crater_table.hpp"
 #include "grit/parallel/parallel.hpp"
 #include "support/case_fixture.hpp"
 
@@ -102,9 +103,8 @@ TEST(AbrasiveWaterJet, GrainsStrikeUnderTheTraversingNozzleIn3D) {
     EXPECT_GT(speed * (t_max - t_min), 2.0 * radius);
     // The deepest cell of the map lies within 1.5 cells of a strike.
     const double dx = spec.particle_spacing;
-    const auto map = grit::analysis::analyse_crater(
-        sim.particles(),
-        {spec.crater_surface, spec.crater_x_min, spec.crater_x_max, false, spec.crater_y_min, spec.crater_y_max}, dx);
+    const auto region = grit::modules::crater_region(spec).value();
+    const auto map = grit::analysis::analyse_crater(sim.particles(), region, dx);
     std::size_t deepest = 0;
     for (std::size_t k = 0; k < map.surface.size(); ++k)
         if (map.surface[k] < map.surface[deepest]) deepest = k;
@@ -113,5 +113,5 @@ TEST(AbrasiveWaterJet, GrainsStrikeUnderTheTraversingNozzleIn3D) {
     for (const auto& r : sim.impacts().records())
         nearest = std::min(nearest, std::hypot(r.position[0] - cx, r.position[1] - cy));
     EXPECT_LT(nearest, 1.5 * dx) << "deepest cell at (" << cx << ", " << cy << ")";
-    EXPECT_EQ(grit::testing::output_value(sim, "crater_depth"), spec.crater_surface - map.surface[deepest]);
+    EXPECT_EQ(grit::testing::output_value(sim, "crater_depth"), region.surface - map.surface[deepest]);
 }

@@ -288,7 +288,7 @@ TEST(Restart, CheckpointWithoutTheCraterModuleContinues) {
     const fs::path file = scratch_file("no_crater.h5");
     {
         auto spec = grit::testing::load_case("awj_copper_2d/case.toml");
-        spec.has_crater = false;  // as the older grit built it
+        spec.jet.crater.reset();  // as the older grit built it
         Simulation<2> s(spec, grit::testing::in_memory());
         s.advance_to(0.0);
         s.save_checkpoint(file);

@@ -174,11 +174,6 @@ void read_symmetry(CaseSpec& c, const Section& domain) {
     if (!c.domain_min.empty() && c.domain_max[0] <= 0.0)
         throw InputError(fmt::format("key 'domain.max' = [{}]: with {} the domain must reach x > 0 (the half that "
                                      "is run)", fmt::join(c.domain_max, ", "), key));
-    // The crater is the whole one: the profile of the half, mirrored.
-    if (c.has_crater) {
-        c.crater_mirror = true;
-        c.crater_x_min = -c.crater_x_max;
-    }
 }
 
 /// [jet]: the jet as the machine is set up. The geometry it implies is built by io/jet_builder.
@@ -436,22 +431,6 @@ CaseSpec read_case_table(toml::table root, const std::filesystem::path& file, st
         c.outlets.push_back(std::move(o));
     }
     if (top.has("jet")) read_jet(top.section("jet"), c, table);
-
-    if (top.has("crater")) {
-        const Section crater = top.section("crater");
-        if (c.solids.empty()) throw InputError("key 'crater': a crater needs a [[solid]]");
-        c.has_crater = true;
-        c.crater_surface = crater.number("surface");
-        c.crater_x_min = crater.number("x_min");
-        c.crater_x_max = crater.number("x_max");
-        if (c.crater_x_max <= c.crater_x_min + dx) crater.fail("x_max", "must exceed x_min by more than a spacing [m]");
-        if (dim == 3) {
-            c.crater_y_min = crater.number("y_min");
-            c.crater_y_max = crater.number("y_max");
-            if (c.crater_y_max <= c.crater_y_min + dx)
-                crater.fail("y_max", "must exceed y_min by more than a spacing [m]");
-        }
-    }
 
     const Section grain_materials = top.section("grain_materials");
     GrainMaterialTable grain_table(grain_materials, c.grain_materials);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -99,6 +100,14 @@ struct JetSpec {
     /// normal incidence, no traverse) and domain.symmetry is on.
     bool symmetric = false;
     double side_width = 0.0;          ///< width of the side outlets [m] (set by the builder)
+    /// The crater the specimen implies (set by the builder): what the crater analysis measures when the
+    /// case has no [crater] (modules/crater_table).
+    struct Crater {
+        double surface = 0.0;             ///< the specimen's top [m]
+        double x_min = 0.0, x_max = 0.0;  ///< between the side outlets [m]
+        double y_min = 0.0, y_max = 0.0;  ///< 3D: the same across the traverse [m]
+    };
+    std::optional<Crater> crater;
 };
 
 /// [abrasive]: grains fed into the jet, one at a random place in each liquid column of length
@@ -292,10 +301,6 @@ struct CaseSpec {
     std::vector<InletSpec> inlets;
     std::vector<OutletSpec> outlets;
 
-    bool has_crater = false;  ///< [crater] given: crater.csv, crater_depth and crater_width (3D: crater_length)
-    double crater_surface = 0.0, crater_x_min = 0.0, crater_x_max = 0.0;
-    double crater_y_min = 0.0, crater_y_max = 0.0;  ///< 3D: the map's range across the traverse
-    bool crater_mirror = false;  ///< the profile is mirrored at x = 0 (a symmetry plane)
     /// domain.symmetry = ["x"] (or jet.symmetric): the plane x = 0 is a symmetry plane; only x >= 0 is
     /// laid and run (modules/symmetry_plane).
     bool symmetry_plane = false;

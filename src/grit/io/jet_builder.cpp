@@ -263,22 +263,20 @@ void build_jet(CaseSpec& c) {
         cl.velocity.assign(static_cast<std::size_t>(dim), 0.0);
         c.clamps.push_back(cl);
     }
-    if (!c.has_crater) {
-        c.has_crater = true;
-        c.crater_surface = surface;
+    {
         // Between the outlets, in whole spacings from the specimen's edges: the profile's bins are then
-        // centred on the lattice's columns (analysis::analyse_crater). In 3D the map also spans y.
+        // centred on the lattice's columns (analysis::analyse_crater). In 3D the map also spans y. (On a
+        // symmetry plane the crater analysis mirrors it: modules/crater_table.)
         const double inset = std::round(w / dx) * dx;
-        c.crater_x_min = lo[0] + inset;
-        c.crater_x_max = hi[0] - inset;
+        JetSpec::Crater crater;
+        crater.surface = surface;
+        crater.x_min = lo[0] + inset;
+        crater.x_max = hi[0] - inset;
         if (dim == 3) {
-            c.crater_y_min = lo[1] + inset;
-            c.crater_y_max = hi[1] - inset;
+            crater.y_min = lo[1] + inset;
+            crater.y_max = hi[1] - inset;
         }
-        if (j.symmetric) {  // the whole crater, mirrored
-            c.crater_x_min = -c.crater_x_max;
-            c.crater_mirror = true;
-        }
+        j.crater = crater;
     }
     if (c.abrasive.enabled) build_abrasive(c, c.inlets.back(), j.diameter);
 }

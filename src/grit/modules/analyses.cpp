@@ -15,33 +15,34 @@
 #include "grit/io/csv_file.hpp"
 #include "grit/io/hdf5_file.hpp"
 #include "grit/modules/cracks_table.hpp"
+#include "grit/modules/crater_table.hpp"
 
 namespace grit::modules {
 
 namespace {
 
-analysis::CraterRegion crater_region(const io::CaseSpec& spec) {
-    return {spec.crater_surface, spec.crater_x_min, spec.crater_x_max, spec.crater_mirror, spec.crater_y_min,
-            spec.crater_y_max};
-}
-
 /// The crater of a 2D run (its profile) or of a 3D run (its map): each sub-domain's bins, combined by
 /// their maximum over every sub-domain, then measured (the same on every rank).
 template <int Dim>
-auto crater_of(const sim::State<Dim>& state, const io::CaseSpec& spec, double spacing, const domain::Comm& comm) {
-    auto c = analysis::crater_bins(state.particles, crater_region(spec), spacing);
+auto crater_of(const sim::State<Dim>& state, const analysis::CraterRegion& region, double spacing,
+               const domain::Comm& comm) {
+    auto c = analysis::crater_bins(state.particles, region, spacing);
     comm.max_each(c.surface);
-    if constexpr (Dim == 2) analysis::measure_profile(c, spec.crater_surface, spacing);
-    else analysis::measure_map(c, spec.crater_surface, spacing);
+    if constexpr (Dim == 2) analysis::measure_profile(c, region.surface, spacing);
+    else analysis::measure_map(c, region.surface, spacing);
     return c;
 }
 
 }  // namespace
 
 template <int Dim>
+CraterModule<Dim>::CraterModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup)
+    : state_(state), setup_(setup), region_(crater_region(setup.spec).value()) {}
+
+template <int Dim>
 void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const {
     // Measured from the combined bins: every sub-domain holds the same values.
-    const auto c = crater_of(state_, setup_.spec, setup_.spacing, setup_.comm);
+    const auto c = crater_of(state_, region_, setup_.spacing, setup_.comm);
     out.push_back(sim::OutputValue::real("crater_depth", c.depth, domain::Combine::same));
     out.push_back(sim::OutputValue::real("crater_width", c.width, domain::Combine::same));
     out.push_back(sim::OutputValue::real("crater_rim_width", c.rim_width, domain::Combine::same));
@@ -53,13 +54,12 @@ void CraterModule<Dim>::output_values(std::vector<sim::OutputValue>& out) const 
 
 template <int Dim>
 void CraterModule<Dim>::describe(nlohmann::ordered_json& summary) const {
-    const auto& spec = setup_.spec;
     auto& region = summary["crater_region"];
-    region = {{"surface", spec.crater_surface}, {"x_min", spec.crater_x_min}, {"x_max", spec.crater_x_max},
-              {"mirror", spec.crater_mirror}};
+    region = {{"surface", region_.surface}, {"x_min", region_.x_min}, {"x_max", region_.x_max},
+              {"mirror", region_.mirror}};
     if constexpr (Dim == 3) {
-        region["y_min"] = spec.crater_y_min;
-        region["y_max"] = spec.crater_y_max;
+        region["y_min"] = region_.y_min;
+        region["y_max"] = region_.y_max;
     }
 }
 
@@ -77,7 +77,7 @@ std::string CraterModule<Dim>::header() {
 
 template <int Dim>
 void CraterModule<Dim>::write_output(const sim::OutputPlace& place) {
-    const auto c = crater_of(state_, setup_.spec, setup_.spacing, setup_.comm);
+    const auto c = crater_of(state_, region_, setup_.spacing, setup_.comm);
     // Header first (numpy's genfromtxt(names=True), pandas' read_csv); the time is a column.
     std::string rows;
     const std::string time = fmt::format("{:.9g}", state_.clock.time);

@@ -6,6 +6,7 @@
 
 #include <fstream>
 
+#include "grit/analysis/crater.hpp"
 #include "grit/analysis/probes.hpp"
 #include "grit/modules/probes_table.hpp"
 #include "grit/sim/module.hpp"
@@ -15,7 +16,7 @@ namespace grit::modules {
 template <int Dim>
 class CraterModule final : public sim::Module<Dim> {
 public:
-    CraterModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup) : state_(state), setup_(setup) {}
+    CraterModule(const sim::State<Dim>& state, const sim::RunSetup<Dim>& setup);
     std::string name() const override { return "crater"; }
     void install(sim::Pipeline&) override {}
     void output_values(std::vector<sim::OutputValue>& out) const override;
@@ -38,6 +39,7 @@ private:
 
     const sim::State<Dim>& state_;
     const sim::RunSetup<Dim>& setup_;
+    analysis::CraterRegion region_;  ///< where the crater is measured (crater_region)
     std::ofstream history_;
     long history_rows_ = 0;
     bool history_restored_ = false;  // load() found the count (a checkpoint from before it has none)

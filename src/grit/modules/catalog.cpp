@@ -9,6 +9,7 @@
 #include "grit/modules/analyses.hpp"
 #include "grit/modules/coupling.hpp"
 #include "grit/modules/cracks_table.hpp"
+#include "grit/modules/crater_table.hpp"
 #include "grit/modules/grain_contact.hpp"
 #include "grit/modules/grain_feed.hpp"
 #include "grit/modules/grains.hpp"
@@ -68,7 +69,7 @@ std::vector<sim::ModuleDescriptor<Dim>> builtin_modules() {
                          return std::make_unique<SolidModule<Dim>>(c.state, c.setup, *sph);
                      }});
     table.push_back(plain<Dim, CraterModule>("crater", before, [](const Spec& s) {
-        return !s.solids.empty() && s.has_crater;
+        return !s.solids.empty() && crater_region(s).has_value();
     }));
     table.push_back(plain<Dim, CracksModule>("cracks", before, [](const Spec& s) { return crack_options(s).has_value(); }));
     table.push_back(plain<Dim, FluidInSolidModule>("fluid_in_solid", before, [](const Spec& s) {
@@ -117,7 +118,7 @@ namespace grit::io {
 // The tables grit's modules read themselves; the others are still read by io/case_reader.cpp into
 // CaseSpec's own members.
 std::vector<CaseTable> builtin_case_tables() {
-    return {modules::probes_table(), modules::cracks_table()};
+    return {modules::probes_table(), modules::cracks_table(), modules::crater_table()};
 }
 
 }  // namespace grit::io

@@ -15,9 +15,17 @@
 #include "grit/core/error.hpp"
 #include "grit/io/case_reader.hpp"
 #include "grit/io/jet_builder.hpp"
+#include "grit/modules/crater_table.hpp"
 #include "support/case_text.hpp"
 
 namespace {
+
+/// The crater region the case measures (its [crater], or the one its jet's specimen implies).
+grit::analysis::CraterRegion crater(const grit::io::CaseSpec& c) {
+    const auto region = grit::modules::crater_region(c);
+    EXPECT_TRUE(region.has_value());
+    return region.value_or(grit::analysis::CraterRegion{});
+}
 
 namespace fs = std::filesystem;
 using grit::io::CaseSpec;
@@ -124,12 +132,12 @@ TEST(JetBuilder, BuildsTheNozzleOutletsClampsCraterAndDomain) {
     ASSERT_EQ(c.clamps.size(), 2u);
     EXPECT_LT(c.clamps[0].min[0], -6e-3);
     EXPECT_GT(c.clamps[1].max[0], 6e-3);
-    EXPECT_TRUE(c.has_crater);
-    EXPECT_DOUBLE_EQ(c.crater_surface, 0.0);
+    EXPECT_TRUE(grit::modules::crater_region(c).has_value());
+    EXPECT_DOUBLE_EQ(crater(c).surface, 0.0);
     // Between the outlets (w = 0.96 mm of the 12 mm plate), whole spacings in from its edges, so that
     // the profile's bins are centred on the lattice's columns.
-    EXPECT_NEAR(c.crater_x_min, -5e-3, 1e-12);
-    EXPECT_NEAR(c.crater_x_max, 5e-3, 1e-12);
+    EXPECT_NEAR(crater(c).x_min, -5e-3, 1e-12);
+    EXPECT_NEAR(crater(c).x_max, 5e-3, 1e-12);
     EXPECT_TRUE(c.remove_leaving);
     // The domain holds the specimen and the point upstream of the nozzle where grains join.
     EXPECT_LT(c.domain_min[0], -6e-3);
@@ -313,9 +321,9 @@ TEST(JetBuilder, SymmetricJetLaysTheHalf) {
     EXPECT_DOUBLE_EQ(c.outlets[0].min[0], whole.outlets[1].min[0]);  // the right one, as it was
     ASSERT_EQ(c.clamps.size(), 1u);
     EXPECT_DOUBLE_EQ(c.clamps[0].min[0], whole.clamps[1].min[0]);
-    EXPECT_TRUE(c.crater_mirror);
-    EXPECT_DOUBLE_EQ(c.crater_x_min, whole.crater_x_min);
-    EXPECT_DOUBLE_EQ(c.crater_x_max, whole.crater_x_max);
+    EXPECT_TRUE(crater(c).mirror);
+    EXPECT_DOUBLE_EQ(crater(c).x_min, crater(whole).x_min);
+    EXPECT_DOUBLE_EQ(crater(c).x_max, crater(whole).x_max);
     EXPECT_LT(c.domain_min[0], 0.0);  // a particle that drifts across is reflected, not lost
     EXPECT_DOUBLE_EQ(c.domain_max[0], whole.domain_max[0]);
     EXPECT_DOUBLE_EQ(c.abrasive.mass_flow_rate, whole.abrasive.mass_flow_rate);
@@ -356,17 +364,17 @@ TEST(JetBuilder, CraterMapIn3DSpansXAndY) {
     text3 = replaced(text3, "max = [6.0e-3, 0.0]", "max = [6.0e-3, 3.0e-3, 0.0]");
     text3 = replaced(text3, "particle_spacing = 1.0e-4", "particle_spacing = 2.0e-4");
     const CaseSpec c = read(text3);
-    EXPECT_TRUE(c.has_crater);
-    EXPECT_NEAR(c.crater_x_min, -5e-3, 1e-12);
-    EXPECT_NEAR(c.crater_x_max, 5e-3, 1e-12);
-    EXPECT_NEAR(c.crater_y_min, -2e-3, 1e-12);
-    EXPECT_NEAR(c.crater_y_max, 2e-3, 1e-12);
+    EXPECT_TRUE(grit::modules::crater_region(c).has_value());
+    EXPECT_NEAR(crater(c).x_min, -5e-3, 1e-12);
+    EXPECT_NEAR(crater(c).x_max, 5e-3, 1e-12);
+    EXPECT_NEAR(crater(c).y_min, -2e-3, 1e-12);
+    EXPECT_NEAR(crater(c).y_max, 2e-3, 1e-12);
     const std::string own = text3 + "[crater]\nsurface = 0.0\nx_min = -4.0e-3\nx_max = 4.0e-3\n";
     const std::string missing = error_of(own);
     EXPECT_TRUE(has(missing, "crater.y_min")) << missing;
     const CaseSpec given = read(own + "y_min = -1.0e-3\ny_max = 1.0e-3\n");
-    EXPECT_NEAR(given.crater_y_min, -1e-3, 1e-12);
-    EXPECT_NEAR(given.crater_y_max, 1e-3, 1e-12);
+    EXPECT_NEAR(crater(given).y_min, -1e-3, 1e-12);
+    EXPECT_NEAR(crater(given).y_max, 1e-3, 1e-12);
     EXPECT_TRUE(has(error_of(own + "y_min = 1.0e-3\ny_max = 1.0e-3\n"), "crater.y_max"));
     // In 2D y_min is not a key of [crater].
     const std::string flat = awj_case + "[crater]\nsurface = 0.0\nx_min = -4.0e-3\nx_max = 4.0e-3\ny_min = 0.0\n";
@@ -384,8 +392,8 @@ max = [6.5e-3, 4.0e-3]
     const CaseSpec c = read(half, {"domain.symmetry=[\"x\"]"});
     EXPECT_TRUE(c.symmetry_plane);
     EXPECT_EQ(c.symmetry_key, "domain.symmetry");
-    EXPECT_TRUE(c.crater_mirror);
-    EXPECT_DOUBLE_EQ(c.crater_x_min, -c.crater_x_max);
+    EXPECT_TRUE(crater(c).mirror);
+    EXPECT_DOUBLE_EQ(crater(c).x_min, -crater(c).x_max);
     const std::string y = error_of(half, {"domain.symmetry=[\"y\"]"});
     EXPECT_TRUE(has(y, "key 'domain.symmetry'")) << y;
     EXPECT_TRUE(has(y, "x = 0 only")) << y;
