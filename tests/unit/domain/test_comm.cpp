@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <utility>
 #include <vector>
 
 #include "grit/domain/comm.hpp"
+#include "support/loopback_comm.hpp"
 
 namespace grit::domain {
 namespace {
@@ -96,6 +98,41 @@ TEST(Comm, EachCombineKindReducesAsItsNameSays) {
     // A rank with no value yet (NaN: no removal yet) leaves the others' minimum as it is.
     EXPECT_EQ(comm.combine(Combine::min, std::nan("")), -2.0);
     EXPECT_TRUE(std::isnan(FixedPeers({std::nan("")}).combine(Combine::min, std::nan(""))));
+}
+
+TEST(Comm, OneProcessSendsItsMessageToItself) {
+    const SerialComm comm;
+    const Comm::Message m = {std::byte{1}, std::byte{2}};
+    const auto in = comm.exchange({m});
+    ASSERT_EQ(in.size(), 1u);
+    EXPECT_EQ(in[0], m);
+    EXPECT_THROW(comm.exchange({m, m}), std::logic_error);
+    EXPECT_EQ(unite(comm, {5, 3, 5}), (std::vector<std::int64_t>{3, 5}));
+}
+
+// Over three sub-domains (the loopback the process tests run on): messages reach the rank they are
+// addressed to, ids keep all 64 bits (two ids a double would round to one), the ids of every rank are
+// united, and a sum adds the ranks' values in rank order (the same bits whichever thread comes first).
+TEST(Comm, ThreeSubDomainsExchangeReduceAndUnite) {
+    constexpr std::int64_t big = (std::int64_t{1} << 60) + 1;  // beyond 2^53: a double holds 2^60
+    std::mutex lock;
+    std::vector<std::vector<std::int64_t>> seen(3);
+    grit::testing::run_loopback(3, [&](const Comm& comm) {
+        const int r = comm.rank();
+        std::vector<Comm::Message> out(3);
+        for (int to = 0; to < 3; ++to) out[static_cast<std::size_t>(to)] = {std::byte(10 * r + to)};
+        const auto in = comm.exchange(out);
+        for (int from = 0; from < 3; ++from)
+            EXPECT_EQ(in[static_cast<std::size_t>(from)], Comm::Message{std::byte(10 * from + r)});
+        EXPECT_EQ(comm.min_id(r == 1 ? big : big + 1), big);
+        EXPECT_EQ(comm.sum(r == 0 ? 1.0 : r == 1 ? 1e-16 : 1e-16), (1.0 + 1e-16) + 1e-16);
+        EXPECT_TRUE(comm.any(r == 2));
+        EXPECT_FALSE(comm.any(false));
+        const auto all = unite(comm, r == 0 ? std::vector<std::int64_t>{} : std::vector<std::int64_t>{7, r});
+        const std::lock_guard guard(lock);
+        seen[static_cast<std::size_t>(r)] = all;
+    });
+    for (const auto& s : seen) EXPECT_EQ(s, (std::vector<std::int64_t>{1, 2, 7}));
 }
 
 }  // namespace
