@@ -50,8 +50,8 @@ public:
     virtual double sum(double value) const = 0;
     /// The smallest of the ranks' integers (a particle id: ids need all 64 bits, which a double does not hold).
     virtual std::int64_t min_id(std::int64_t value) const = 0;
-    /// True on every rank when `value` is true on any (for the shared neighbour-list rebuild decision, which
-    /// does not go through it yet: each list is still rebuilt by its owner).
+    /// True on every rank when `value` is true on any: the shared neighbour-list rebuild decision (the
+    /// sub-domain tests take it; a run's lists are still rebuilt by their owners).
     virtual bool any(bool value) const = 0;
     /// Element-wise reductions, in place, of arrays every rank holds with the same length: the local pass
     /// of an analysis (a crater's bins, the probes' partial sums) becomes the run's. max_each leaves NaN
@@ -64,7 +64,7 @@ public:
     virtual std::vector<Message> exchange(std::vector<Message> outgoing) const = 0;
 
     /// `value` of this rank combined with the others' by `kind`. `same` returns it as it is (every rank
-    /// holds it); `whole_set` values are computed over the gathered set by their module, not here.
+    /// holds it); `whole_set` values are computed by their module (from exchanged labels), not here.
     double combine(Combine kind, double value) const {
         switch (kind) {
             case Combine::sum: return sum(value);
