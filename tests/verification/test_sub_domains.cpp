@@ -44,8 +44,9 @@ using Snapshot = std::map<grit::domain::ParticleId, ParticleState<Dim>>;
 
 template <int Dim>
 void record(const grit::particles::SphParticles<Dim>& ps, Snapshot<Dim>& out) {
+    const std::int32_t* ghost = grit::domain::ProcessHalo<Dim>::ghost_marks(ps);
     for (Index i = 0; i < ps.size(); ++i)
-        if (!grit::domain::ProcessHalo<Dim>::is_ghost(ps, i))
+        if (!ghost || !ghost[i])
             out[ps.id()[i]] = {ps.position()[i], ps.velocity()[i], ps.density()[i], ps.pressure()[i]};
 }
 

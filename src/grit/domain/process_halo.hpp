@@ -35,9 +35,10 @@ public:
 
     static constexpr const char* ghost_field = "ghost";
 
-    /// Whether particle i of `ps` is a ghost (a copy of another rank's particle).
-    static bool is_ghost(const Particles& ps, Index i) {
-        return ps.fields().has(ghost_field) && ps.fields().template get<std::int32_t>(ghost_field)[i] != 0;
+    /// Each particle's ghost mark (non-zero: a copy of another rank's particle), or null while the set has
+    /// never held ghosts. Read it once, outside a loop over particles (the field is found by name).
+    static const std::int32_t* ghost_marks(const Particles& ps) {
+        return ps.fields().has(ghost_field) ? ps.fields().template get<std::int32_t>(ghost_field).data() : nullptr;
     }
 
     /// Removes this rank's ghosts.
@@ -48,7 +49,8 @@ public:
         for (Index i = 0; i < ps.size(); ++i)
             if (!ghost[i]) keep.push_back(i);
         if (static_cast<Index>(keep.size()) != ps.size()) ps.remove(keep);
-        for (auto* rows : {&send_ids_, &ghost_ids_}) rows->clear();
+        send_ids_.clear();
+        ghost_ids_.clear();
         send_rows_.clear();
         ghost_rows_.clear();
     }
@@ -109,8 +111,7 @@ public:
     void resolve(const Particles& ps) {
         IdIndex index;
         index.build(ps.id(), ps.size());
-        const std::int32_t* ghost =
-            ps.fields().has(ghost_field) ? ps.fields().template get<std::int32_t>(ghost_field).data() : nullptr;
+        const std::int32_t* ghost = ghost_marks(ps);
         auto rows_of = [&](const std::vector<std::vector<ParticleId>>& ids, bool ghosts) {
             std::vector<std::vector<Index>> rows(ids.size());
             for (std::size_t r = 0; r < ids.size(); ++r)

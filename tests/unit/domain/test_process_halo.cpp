@@ -57,8 +57,9 @@ Particles part(const Particles& whole, const SlabPartition<2>& partition, int ra
 /// rho_a w(|x_a - x_i|) to spread[i]: a contribution an owned particle spreads onto its neighbours.
 std::vector<double> spread_from_owned(const Particles& ps) {
     std::vector<double> spread(static_cast<std::size_t>(ps.size()), 0.0);
+    const std::int32_t* ghost = ProcessHalo<2>::ghost_marks(ps);
     for (Index a = 0; a < ps.size(); ++a) {
-        if (ProcessHalo<2>::is_ghost(ps, a)) continue;
+        if (ghost && ghost[a]) continue;
         for (Index i = 0; i < ps.size(); ++i) {
             const double d = core::norm(ps.position()[a] - ps.position()[i]);
             if (i != a && d < reach) spread[static_cast<std::size_t>(i)] += ps.density()[a] * weight_of(d);
@@ -105,8 +106,10 @@ TEST_P(ProcessHaloTest, GhostsAreTheOtherSubDomainsParticlesWithinTheWidth) {
                 partition.distance(whole.position()[i], comm.rank()) < reach)
                 expected.insert(whole.id()[i]);
         std::set<ParticleId> got;
+        const std::int32_t* ghost = ProcessHalo<2>::ghost_marks(ps);
+        ASSERT_NE(ghost, nullptr);
         for (Index i = owned; i < ps.size(); ++i) {
-            ASSERT_TRUE(ProcessHalo<2>::is_ghost(ps, i));
+            ASSERT_TRUE(ghost[i]);
             got.insert(ps.id()[i]);  // a ghost keeps its owner's id
         }
         EXPECT_EQ(got, expected) << "rank " << comm.rank();
@@ -148,8 +151,9 @@ TEST_P(ProcessHaloTest, ReverseAddReturnsWhatLandedOnGhostsAsTheWholeSetSpreadsI
         std::vector<double> spread = spread_from_owned(ps);
         halo.reverse_add(ps, spread.data(), comm);
         const std::lock_guard guard(lock);
+        const std::int32_t* ghost = ProcessHalo<2>::ghost_marks(ps);
         for (Index i = 0; i < ps.size(); ++i) {
-            if (ProcessHalo<2>::is_ghost(ps, i)) continue;
+            if (ghost[i]) continue;
             ++seen;
             const double e = expected.at(ps.id()[i]);
             EXPECT_NEAR(spread[static_cast<std::size_t>(i)], e, 1e-12 * std::abs(e) + 1e-300)
